@@ -1,13 +1,16 @@
 //! What both architectures build from: [`lerp`] (linear interpolation),
 //! [`over`] (the over operator, fused for the RPC's one-clock loop), the
 //! pipelined [`piped_mul`] (the exact unorm multiplier) and [`piped_over`],
-//! [`delay_line`] (and [`registered_line`], its output a register), [`ram`] (block RAM as deep as the scene needs) and
+//! [`delay_line`] (and [`registered_line`], its output a register, and
+//! [`banked_line`], a register at each block RAM), [`ram`] (block RAM as
+//! deep as the scene needs) and
 //! [`depth_rom`] (a constant table as deep as the build's width needs), the
 //! host's [`regs`] and [`table`]s (written between frames), the [`shader`]
 //! (classification, with the [`gradient_bin`] of gradient opacity and its
 //! [`square`]s, and the [`lighting`] of the [`normal_quantizer`]'s normal),
 //! and [`lanes`], the lane counts the RTL is built for.
 
+pub mod banked_line;
 pub mod delay_line;
 pub mod depth_rom;
 pub mod gradient_bin;

@@ -35,6 +35,11 @@ pub struct DepthRam<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> {
     /// when empty. `_mask` has exactly their bits set.
     _fields: Vec<(usize, usize)>,
     _mask: Option<D>,
+    /// Read in two clocks through banks of 2^[`BLOCK_BITS`] words, each with an
+    /// output register of its own ([`DepthRam::bank_registers`]); the
+    /// word read a clock ago waits in `_stage`.
+    _banked: bool,
+    _stage: D,
 }
 
 impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> DepthRam<D, N> {
@@ -65,7 +70,24 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> DepthRam<D, N> {
             _init: 0,
             _fields: Vec::new(),
             _mask: None,
+            _banked: false,
+            _stage: D::default(),
         }
+    }
+
+    /// Read in two clocks, not one: the memory is built as banks of
+    /// 2^[`BLOCK_BITS`] words (an ECP5 DP16KD in its deepest shape holds
+    /// that many 1-bit words, so a bank needs no depth cascade of its own),
+    /// each bank's read word goes into a register of its own, and the bank
+    /// is chosen after those registers. A block RAM's read then ends in a
+    /// flip-flop that can sit beside it, with no selection or routing
+    /// across the part in between: the DP16KD's own output register
+    /// (`REGMODE = "OUTREG"`), built in the fabric because yosys does not
+    /// set it. `read_data` is the registered words through the bank
+    /// selection (a multiplexer after the registers, none with one bank).
+    pub fn bank_registers(mut self) -> Self {
+        self._banked = true;
+        self
     }
 
     /// Store only the bit fields `(lowest bit, width)` of each word; `mask`
@@ -120,7 +142,13 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> DepthRam<D, N> {
 impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> Logic for DepthRam<D, N> {
     fn update(&mut self) {
         if self.read_clock.pos_edge() {
-            self.read_data.next = self._words[self.index(self.read_address.val())];
+            let word = self._words[self.index(self.read_address.val())];
+            if self._banked {
+                self.read_data.next = self._stage;
+                self._stage = word;
+            } else {
+                self.read_data.next = word;
+            }
         }
         if self.write_clock.pos_edge() && self.write_enable.val() {
             let i = self.index(self.write_address.val());
@@ -148,70 +176,109 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> Logic for DepthRam
                 .collect();
             format!("{{{}}}", parts.join(", "))
         };
-        let init = if self._init > 0 {
-            let lines: Vec<String> = self._words[..self._init]
-                .iter()
-                .enumerate()
-                .map(|(i, w)| {
-                    format!(
-                        "   init_word = {}'({});\n   mem[{i}] = {};",
-                        D::BITS,
-                        w.verilog(),
-                        stored("init_word")
-                    )
-                })
-                .collect();
-            format!(
-                "reg [{}:0] init_word;\ninitial begin\n{}\nend\n",
-                D::BITS - 1,
-                lines.join("\n")
-            )
-        } else {
-            String::new()
-        };
-        // The stored word and the read word, as concatenations, MSB first.
-        let (stored, read) = if self._fields.is_empty() {
-            (
-                "write_data".to_string(),
-                format!("mem[read_address[{msb}:0]]"),
-            )
-        } else {
-            let mut stored = Vec::new();
+        // The data word of a stored word `s`: its fields in place, zeros
+        // between them.
+        let expand = |s: &str| -> String {
+            if self._fields.is_empty() {
+                return s.to_string();
+            }
             let mut read = Vec::new();
             let (mut top, mut offset) = (D::BITS, self.word_bits());
             for &(lo, w) in self._fields.iter().rev() {
                 if top > lo + w {
                     read.push(format!("{}'d0", top - lo - w));
                 }
-                stored.push(format!("write_data[{}:{lo}]", lo + w - 1));
-                read.push(format!(
-                    "mem[read_address[{msb}:0]][{}:{}]",
-                    offset - 1,
-                    offset - w
-                ));
+                read.push(format!("{s}[{}:{}]", offset - 1, offset - w));
                 offset -= w;
                 top = lo;
             }
             if top > 0 {
                 read.push(format!("{top}'d0"));
             }
-            (
-                format!("{{{}}}", stored.join(", ")),
-                format!("{{{}}}", read.join(", ")),
-            )
+            format!("{{{}}}", read.join(", "))
         };
+        // Banks of `bank_words`, the last one shorter: one bank unless
+        // `bank_registers` asked for them.
+        let words = self._words.len();
+        let bank_bits = if self._banked {
+            BLOCK_BITS.min(self._bits)
+        } else {
+            self._bits
+        };
+        let bank_words = 1usize << bank_bits;
+        let banks = words.div_ceil(bank_words);
         // A short or small memory is LUT RAM: a block RAM for 64 words, or
         // for a 256-entry table of 8-bit words, would waste most of its 18
         // Kbit (yosys picks block RAM for wide ones).
-        let style = if self._words.len() <= DISTRIBUTED_WORDS
-            || self._words.len() * self.word_bits() <= DISTRIBUTED_BITS
-        {
+        let style = if words <= DISTRIBUTED_WORDS || words * self.word_bits() <= DISTRIBUTED_BITS {
             "(* ram_style = \"distributed\" *)\n"
         } else {
             ""
         };
-        Verilog::Custom(format!(
-            "\
+        let d = self.word_bits() - 1;
+        let low = format!("[{}:0]", bank_bits - 1);
+        // Each bank in slices of the word as wide as one block RAM is at
+        // the bank's depth (a DP16KD holds 16384x1, 8192x2, 4096x4, 2048x9,
+        // 1024x18 or 512x36), so that every slice is one block RAM with no
+        // selection of its own before the bank's register.
+        let deepest = bank_words.min(words);
+        let slice = if !style.is_empty() {
+            d + 1
+        } else {
+            match deepest {
+                0..=512 => 36,
+                513..=1024 => 18,
+                1025..=2048 => 9,
+                2049..=4096 => 4,
+                4097..=8192 => 2,
+                _ => 1,
+            }
+        };
+        let slices: Vec<(usize, usize)> = (0..=d)
+            .step_by(slice)
+            .map(|lo| (lo, (lo + slice - 1).min(d)))
+            .collect();
+        // Initial contents of bank `b`'s word `i`, slice by slice.
+        let init_slices = |b: usize, i: usize| -> String {
+            slices
+                .iter()
+                .enumerate()
+                .map(|(j, &(lo, hi))| format!("   mem_{b}_{j}[{i}] = init_stored[{hi}:{lo}];\n"))
+                .collect()
+        };
+        let init = if self._init > 0 {
+            let lines: Vec<String> = self._words[..self._init]
+                .iter()
+                .enumerate()
+                .map(|(i, w)| {
+                    let word = format!("   init_word = {}'({});\n", D::BITS, w.verilog());
+                    if self._banked {
+                        format!(
+                            "{word}   init_stored = {};\n{}",
+                            stored("init_word"),
+                            init_slices(i / bank_words, i % bank_words)
+                        )
+                    } else {
+                        format!("{word}   mem[{i}] = {};", stored("init_word"))
+                    }
+                })
+                .collect();
+            let stored_reg = if self._banked {
+                format!("reg [{d}:0] init_stored;\n")
+            } else {
+                String::new()
+            };
+            format!(
+                "reg [{}:0] init_word;\n{stored_reg}initial begin\n{}\nend\n",
+                D::BITS - 1,
+                lines.join("\n")
+            )
+        } else {
+            String::new()
+        };
+        if !self._banked {
+            return Verilog::Custom(format!(
+                "\
 {style}reg [{d}:0] mem[{last}:0];
 {init}
 always @(posedge read_clock) begin
@@ -220,12 +287,66 @@ end
 
 always @(posedge write_clock) begin
    if (write_enable) begin
-      mem[write_address[{msb}:0]] <= {stored};
+      mem[write_address{low}] <= {stored};
    end
 end
 ",
-            d = self.word_bits() - 1,
-            last = self._words.len() - 1,
+                last = words - 1,
+                read = expand(&format!("mem[read_address{low}]")),
+                stored = stored("write_data"),
+            ));
+        }
+        let mut decl = format!("wire [{d}:0] stored_word = {};\n", stored("write_data"));
+        let mut reads = String::new();
+        let mut writes = String::new();
+        let mut choose = String::new();
+        for b in 0..banks {
+            let depth = bank_words.min(words - b * bank_words);
+            for (j, &(lo, hi)) in slices.iter().enumerate() {
+                decl += &format!("{style}reg [{}:0] mem_{b}_{j}[{}:0];\n", hi - lo, depth - 1);
+                reads += &format!("   rd_{b}[{hi}:{lo}] <= mem_{b}_{j}[read_address{low}];\n");
+            }
+            decl += &format!("reg [{d}:0] rd_{b};\nreg [{d}:0] q_{b};\n");
+            reads += &format!("   q_{b} <= rd_{b};\n");
+            let hit = if banks > 1 {
+                format!(" && write_address[{msb}:{bank_bits}] == {b}")
+            } else {
+                String::new()
+            };
+            let stores: String = slices
+                .iter()
+                .enumerate()
+                .map(|(j, &(lo, hi))| {
+                    format!("      mem_{b}_{j}[write_address{low}] <= stored_word[{hi}:{lo}];\n")
+                })
+                .collect();
+            writes += &format!("   if (write_enable{hit}) begin\n{stores}   end\n");
+            choose += &format!("      {b}: read_data = {};\n", expand(&format!("q_{b}")));
+        }
+        let select = if banks > 1 {
+            let s = self._bits - bank_bits - 1;
+            decl += &format!("reg [{s}:0] sel_1;\nreg [{s}:0] sel_2;\n");
+            reads += &format!("   sel_1 <= read_address[{msb}:{bank_bits}];\n   sel_2 <= sel_1;\n");
+            format!(
+                "always @(*) begin\n   case (sel_2)\n{choose}      default: read_data = {};\n   endcase\nend\n",
+                expand("q_0")
+            )
+        } else {
+            format!(
+                "always @(*) begin\n   read_data = {};\nend\n",
+                expand("q_0")
+            )
+        };
+        Verilog::Custom(format!(
+            "\
+{decl}{init}
+always @(posedge read_clock) begin
+{reads}end
+
+always @(posedge write_clock) begin
+{writes}end
+
+{select}"
         ))
     }
 
@@ -250,6 +371,10 @@ end
         ]
     }
 }
+
+/// Address bits of a bank of [`DepthRam::bank_registers`]: 16384 words,
+/// an ECP5 DP16KD's depth in its 1-bit shape.
+pub const BLOCK_BITS: usize = 14;
 
 /// Memories of at most this many words are built as LUT RAM.
 pub const DISTRIBUTED_WORDS: usize = 64;

@@ -33,7 +33,7 @@
 //! lengths for a view come from the `Beats` register (S and B).
 
 use super::config::PipelineConfig;
-use crate::common::registered_line::RegisteredLine;
+use crate::common::banked_line::BankedLine;
 use rust_hdl::prelude::*;
 
 /// The chain's delay lines, in clocks (`line_a` to `line_d`; a line of 1 is
@@ -79,13 +79,13 @@ pub struct AbcGradient<const H: usize> {
     pub gz_mag: Signal<Out, Bits<16>>,
     /// The chain: S - B - 1, then a register (S - B) or B more (S - 1),
     /// two registers (S, S + 1), B more (S + B) and S - B more (2S).
-    line_a: RegisteredLine<Bits<16>, H>,
+    line_a: BankedLine<Bits<16>, H>,
     reg_yp: DFF<Bits<16>>,
-    line_b: RegisteredLine<Bits<16>, H>,
+    line_b: BankedLine<Bits<16>, H>,
     reg_xm: DFF<Bits<16>>,
     reg_c: DFF<Bits<16>>,
-    line_c: RegisteredLine<Bits<16>, H>,
-    line_d: RegisteredLine<Bits<16>, H>,
+    line_c: BankedLine<Bits<16>, H>,
+    line_d: BankedLine<Bits<16>, H>,
     hop_xm: DFF<Bits<16>>,
     hop_ym: DFF<Bits<16>>,
     hop_zm: DFF<Bits<16>>,
@@ -112,7 +112,7 @@ impl<const H: usize> AbcGradient<H> {
         let voxel_bits = c.voxel_bits;
         let [a_len, b_len, c_len, d_len] = line_lengths(c.slice_beats(), c.beam_beats());
         let line = |length: u32| {
-            RegisteredLine::new(
+            BankedLine::new(
                 if enabled { length as usize } else { 1 },
                 &[(0, voxel_bits as usize)],
                 ((1u64 << voxel_bits) - 1).to_bits(),

@@ -11,16 +11,17 @@
 //! the ring delays the result R(+1), one beam-length line more gives R(0),
 //! another R(-1), and four registers per row give the rest. Which register
 //! a tap takes does not depend on the view; the lines' lengths do, and
-//! come from the `Beats` register (S and B) at run time. Each line's output
-//! is a register ([`RegisteredLine`]): no block RAM's read data reaches the
-//! next line or the taps' selection through logic.
+//! come from the `Beats` register (S and B) at run time. Each line is read
+//! through a register at each of its block RAMs ([`BankedLine`]): no block
+//! RAM's read data crosses the part to the next line or the taps' selection
+//! before a flip-flop.
 //!
 //! Memory: S - B - r - 4 words for the ring and 2B for the lines at the
 //! configuration's largest slice, where each tap used to keep its own ring
 //! of the next power of two above S + B.
 
 use super::config::{tap_offset, PipelineConfig, RESULT_AT, TAPS};
-use crate::common::registered_line::RegisteredLine;
+use crate::common::banked_line::BankedLine;
 use rust_hdl::prelude::*;
 
 /// One lane's compositing-buffer history (`H`-bit delay-line pointers).
@@ -34,9 +35,9 @@ pub struct BufferRows<const H: usize> {
     pub res_beat: Signal<In, Bit>,
     /// Each tap's value (in `TAPS` order) as its ring read used to give it.
     pub tap: [Signal<Out, Bits<64>>; 9],
-    ring: RegisteredLine<Bits<64>, H>,
-    beam0: RegisteredLine<Bits<64>, H>,
-    beam1: RegisteredLine<Bits<64>, H>,
+    ring: BankedLine<Bits<64>, H>,
+    beam0: BankedLine<Bits<64>, H>,
+    beam1: BankedLine<Bits<64>, H>,
     /// Row r's register i is `stage[4 r + i]` (rows +1, 0, -1).
     stage: [DFF<Bits<64>>; 12],
     /// Candidate `5 r + i`: row r's value i clocks after R(e_y).
@@ -58,7 +59,7 @@ impl<const H: usize> BufferRows<H> {
             .fold(0u64, |m, &(lo, w)| m | (((1u128 << w) - 1) as u64) << lo)
             .to_bits();
         let fields = c.ring_fields();
-        let line = |length: u32| RegisteredLine::new(length as usize, &fields, mask);
+        let line = |length: u32| BankedLine::new(length as usize, &fields, mask);
         let [ring, beam0, beam1] = c.history_lines();
         let taps = c.taps();
         BufferRows {

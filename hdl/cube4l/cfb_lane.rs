@@ -81,12 +81,16 @@ pub struct CfbLane<const A: usize> {
     external: Constant<Bit>,
     // The registers' fields.
     nx: Signal<Local, Bits<16>>,
-    nx_last: Signal<Local, Bits<16>>,
-    ny_last: Signal<Local, Bits<16>>,
-    nz_last: Signal<Local, Bits<16>>,
+    /// `n - 1` of each axis and the base plane's border `z1 - z0`,
+    /// registered from `Dims` and `Slices` as the increments are: no
+    /// subtraction from a view register lies before the exit-face compares
+    /// and the base-plane sums.
+    nx_last: DFF<Bits<16>>,
+    ny_last: DFF<Bits<16>>,
+    nz_last: DFF<Bits<16>>,
     z0: Signal<Local, Bits<16>>,
     z1: Signal<Local, Bits<16>>,
-    border: Signal<Local, Bits<16>>,
+    border: DFF<Bits<16>>,
     u_from: Signal<Local, Bits<2>>,
     v_from: Signal<Local, Bits<2>>,
     w_from: Signal<Local, Bits<2>>,
@@ -148,8 +152,9 @@ pub struct CfbLane<const A: usize> {
     addr_q: DFF<Bits<32>>,
     addr_q2: DFF<Bits<32>>,
     pad_q: DFF<Bit>,
-    /// The memory's (or the external port's) word, registered.
-    value_q: DFF<Bits<16>>,
+    /// The external port's word, registered: the memory module's own read
+    /// takes the same two clocks (a register at each of its block RAMs).
+    ext_q: DFF<Bits<16>>,
     sr_q: DFF<Bit>,
     edge_q: DFF<Bit>,
     face_q: DFF<Bits<3>>,
@@ -207,15 +212,22 @@ impl<const A: usize> CfbLane<A> {
             dy_mag: Default::default(),
             invalid: Default::default(),
             // A 2-word stub when the voxels live in external RAM.
-            memory: DepthRam::new(if external {
-                1
-            } else {
-                (c.memory_bits() as usize).min(A)
-            })
-            .fields(
-                &[(0, c.voxel_bits as usize)],
-                ((1u64 << c.voxel_bits) - 1).to_bits(),
-            ),
+            memory: {
+                let m = DepthRam::new(if external {
+                    1
+                } else {
+                    (c.memory_bits() as usize).min(A)
+                })
+                .fields(
+                    &[(0, c.voxel_bits as usize)],
+                    ((1u64 << c.voxel_bits) - 1).to_bits(),
+                );
+                if external {
+                    m
+                } else {
+                    m.bank_registers()
+                }
+            },
             lane: Constant::new(bits16(k)),
             p_mask: Constant::new(bits16(p - 1)),
             p_shift: Constant::new((p.trailing_zeros() as u64).to_bits()),
@@ -281,7 +293,7 @@ impl<const A: usize> CfbLane<A> {
             addr_q: Default::default(),
             addr_q2: Default::default(),
             pad_q: Default::default(),
-            value_q: Default::default(),
+            ext_q: Default::default(),
             sr_q: Default::default(),
             edge_q: Default::default(),
             face_q: Default::default(),
@@ -304,19 +316,19 @@ impl<const A: usize> Logic for CfbLane<A> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, x_q, y_q, z_q, addr_q, addr_q2, pad_q, value_q, sr_q, edge_q, face_q,
-            bx_q, by_q, dxn_q, dxm_q, dyn_q, dym_q, inval_q, halo_q, a_u, a_v, a_w, a_pad, m_u,
-            m_v, m_w_lo, m_w_hi, m_pad, addr, par_dxn, par_dxm, par_dx_pos, par_dyn, par_dym,
-            par_dy_pos
+            self, clock, x_q, y_q, z_q, addr_q, addr_q2, pad_q, ext_q, sr_q, edge_q, face_q, bx_q,
+            by_q, dxn_q, dxm_q, dyn_q, dym_q, inval_q, halo_q, a_u, a_v, a_w, a_pad, m_u, m_v,
+            m_w_lo, m_w_hi, m_pad, addr, nx_last, ny_last, nz_last, border, par_dxn, par_dxm,
+            par_dx_pos, par_dyn, par_dym, par_dy_pos
         );
         // The view registers' fields.
         self.nx.next = self.dims.val().get_bits::<16>(0);
-        self.nx_last.next = self.dims.val().get_bits::<16>(0) - 1;
-        self.ny_last.next = self.dims.val().get_bits::<16>(16) - 1;
-        self.nz_last.next = self.dims.val().get_bits::<16>(32) - 1;
+        self.nx_last.d.next = self.dims.val().get_bits::<16>(0) - 1;
+        self.ny_last.d.next = self.dims.val().get_bits::<16>(16) - 1;
+        self.nz_last.d.next = self.dims.val().get_bits::<16>(32) - 1;
         self.z0.next = self.slices.val().get_bits::<16>(0);
         self.z1.next = self.slices.val().get_bits::<16>(16);
-        self.border.next =
+        self.border.d.next =
             self.slices.val().get_bits::<16>(16) - self.slices.val().get_bits::<16>(0);
         self.u_from.next = self.axes.val().get_bits::<2>(0);
         self.v_from.next = self.axes.val().get_bits::<2>(2);
@@ -431,25 +443,25 @@ impl<const A: usize> Logic for CfbLane<A> {
         // Exit face and base-plane address.
         self.face_c.next = 0.into();
         self.depth.next = self.z1.val() - self.n_s.val();
-        self.bx.next = self.border.val() + self.xc.val();
-        self.by.next = self.border.val() + self.n_beam.val();
-        if (self.xc.val() == self.nx_last.val()) & self.dx_pos.val() {
+        self.bx.next = self.border.q.val() + self.xc.val();
+        self.by.next = self.border.q.val() + self.n_beam.val();
+        if (self.xc.val() == self.nx_last.q.val()) & self.dx_pos.val() {
             self.face_c.next = 2.into();
-            self.bx.next = self.border.val() + self.xc.val() + self.depth.val();
+            self.bx.next = self.border.q.val() + self.xc.val() + self.depth.val();
         } else if (self.xc.val() == 0) & self.dx_neg_nz.val() {
             self.face_c.next = 3.into();
-            self.bx.next = self.border.val() - self.depth.val();
-        } else if (self.n_beam.val() == self.ny_last.val()) & self.dy_pos.val() {
+            self.bx.next = self.border.q.val() - self.depth.val();
+        } else if (self.n_beam.val() == self.ny_last.q.val()) & self.dy_pos.val() {
             self.face_c.next = 4.into();
-            self.by.next = self.border.val() + self.n_beam.val() + self.depth.val();
+            self.by.next = self.border.q.val() + self.n_beam.val() + self.depth.val();
         } else if (self.n_beam.val() == 0) & self.dy_neg_nz.val() {
             self.face_c.next = 5.into();
-            self.by.next = self.border.val() - self.depth.val();
+            self.by.next = self.border.q.val() - self.depth.val();
         }
         if self.n_s.val() == self.z1.val() {
             self.face_c.next = 1.into();
-            self.bx.next = self.border.val() + self.xc.val();
-            self.by.next = self.border.val() + self.n_beam.val();
+            self.bx.next = self.border.q.val() + self.xc.val();
+            self.by.next = self.border.q.val() + self.n_beam.val();
         }
         if self.is_pad.val() | self.inval.val() {
             self.face_c.next = 0.into();
@@ -469,9 +481,9 @@ impl<const A: usize> Logic for CfbLane<A> {
             | (self.xc.val() == 0)
             | (self.n_beam.val() == 0)
             | (self.n_s.val() == 0)
-            | (self.xc.val() == self.nx_last.val())
-            | (self.n_beam.val() == self.ny_last.val())
-            | (self.n_s.val() == self.nz_last.val());
+            | (self.xc.val() == self.nx_last.q.val())
+            | (self.n_beam.val() == self.ny_last.q.val())
+            | (self.n_s.val() == self.nz_last.q.val());
         self.face_q.d.next = self.face_c.val();
         self.bx_q.d.next = self.bx.val();
         self.by_q.d.next = self.by.val();
@@ -483,11 +495,11 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.halo_q.d.next =
             (self.n_s.val() + 1 <= self.z0.val()) | (self.n_s.val() > self.z1.val());
         // Outputs: registered control beside the RAM's registered read.
-        self.value_q.d.next = self.memory.read_data.val();
+        self.ext_q.d.next = self.ext_data.val();
+        self.value.next = self.memory.read_data.val();
         if self.external.val() {
-            self.value_q.d.next = self.ext_data.val();
+            self.value.next = self.ext_q.q.val();
         }
-        self.value.next = self.value_q.q.val();
         if self.pad_q.q.val() {
             self.value.next = 0.into();
         }

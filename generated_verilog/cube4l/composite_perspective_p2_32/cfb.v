@@ -755,6 +755,18 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -851,9 +863,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -872,12 +884,8 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -912,6 +920,26 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$0$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$cfb$lanes$0$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$cfb$lanes$0$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$cfb$lanes$0$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$cfb$lanes$0$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -1067,10 +1095,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$cfb$lanes$0$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$cfb$lanes$0$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$cfb$lanes$0$sr_q sr_q(
         .d(sr_q$d),
@@ -1107,7 +1135,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -1129,6 +1157,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -1141,7 +1173,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -1163,6 +1195,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -1170,12 +1206,12 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -1272,28 +1308,28 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -1309,7 +1345,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -1319,11 +1355,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -1467,6 +1503,23 @@ module top$cfb$lanes$0$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$addr_q2
+module top$cfb$lanes$0$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$border
 module top$cfb$lanes$0$bx_q(d,q,clock);
     
     // Module arguments
@@ -1586,6 +1639,23 @@ module top$cfb$lanes$0$edge_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$edge_q
+module top$cfb$lanes$0$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$ext_q
 module top$cfb$lanes$0$face_q(d,q,clock);
     
     // Module arguments
@@ -1734,18 +1804,98 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[16383:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16383:0];
+    reg [0:0] mem_0_1[16383:0];
+    reg [0:0] mem_0_2[16383:0];
+    reg [0:0] mem_0_3[16383:0];
+    reg [0:0] mem_0_4[16383:0];
+    reg [0:0] mem_0_5[16383:0];
+    reg [0:0] mem_0_6[16383:0];
+    reg [0:0] mem_0_7[16383:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
 endmodule // top$cfb$lanes$0$memory
+module top$cfb$lanes$0$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$nx_last
+module top$cfb$lanes$0$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$ny_last
+module top$cfb$lanes$0$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$nz_last
 module top$cfb$lanes$0$pad_q(d,q,clock);
     
     // Module arguments
@@ -1882,23 +2032,6 @@ module top$cfb$lanes$0$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$sr_q
-module top$cfb$lanes$0$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$cfb$lanes$0$value_q
 module top$cfb$lanes$0$x_q(d,q,clock);
     
     // Module arguments
@@ -2012,6 +2145,18 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -2108,9 +2253,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -2129,12 +2274,8 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -2169,6 +2310,26 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$1$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$cfb$lanes$1$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$cfb$lanes$1$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$cfb$lanes$1$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$cfb$lanes$1$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -2324,10 +2485,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$cfb$lanes$1$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$cfb$lanes$1$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$cfb$lanes$1$sr_q sr_q(
         .d(sr_q$d),
@@ -2364,7 +2525,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -2386,6 +2547,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -2398,7 +2563,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -2420,6 +2585,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -2427,12 +2596,12 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -2529,28 +2698,28 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -2566,7 +2735,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -2576,11 +2745,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -2724,6 +2893,23 @@ module top$cfb$lanes$1$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$addr_q2
+module top$cfb$lanes$1$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$border
 module top$cfb$lanes$1$bx_q(d,q,clock);
     
     // Module arguments
@@ -2843,6 +3029,23 @@ module top$cfb$lanes$1$edge_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$edge_q
+module top$cfb$lanes$1$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$ext_q
 module top$cfb$lanes$1$face_q(d,q,clock);
     
     // Module arguments
@@ -2991,18 +3194,98 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[16383:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16383:0];
+    reg [0:0] mem_0_1[16383:0];
+    reg [0:0] mem_0_2[16383:0];
+    reg [0:0] mem_0_3[16383:0];
+    reg [0:0] mem_0_4[16383:0];
+    reg [0:0] mem_0_5[16383:0];
+    reg [0:0] mem_0_6[16383:0];
+    reg [0:0] mem_0_7[16383:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
 endmodule // top$cfb$lanes$1$memory
+module top$cfb$lanes$1$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$nx_last
+module top$cfb$lanes$1$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$ny_last
+module top$cfb$lanes$1$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$nz_last
 module top$cfb$lanes$1$pad_q(d,q,clock);
     
     // Module arguments
@@ -3139,23 +3422,6 @@ module top$cfb$lanes$1$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$sr_q
-module top$cfb$lanes$1$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$cfb$lanes$1$value_q
 module top$cfb$lanes$1$x_q(d,q,clock);
     
     // Module arguments

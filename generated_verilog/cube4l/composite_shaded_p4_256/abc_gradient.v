@@ -494,75 +494,9 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$0$feed$abc$line_a$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$0$feed$abc$line_a$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$0$feed$abc$line_a$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$0$feed$abc$line_a
-module top$lanes$0$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbd;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -573,6 +507,9 @@ module top$lanes$0$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -582,13 +519,22 @@ module top$lanes$0$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$0$feed$abc$line_a$line$ram ram(
+    top$lanes$0$feed$abc$line_a$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -597,59 +543,95 @@ module top$lanes$0$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$0$feed$abc$line_a$line$ptr ptr(
+    top$lanes$0$feed$abc$line_a$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$0$feed$abc$line_a$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$0$feed$abc$line_a$line$rd_flipped rd_flipped(
+    top$lanes$0$feed$abc$line_a$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$0$feed$abc$line_a$line$one one(
+    top$lanes$0$feed$abc$line_a$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$0$feed$abc$line_a$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$0$feed$abc$line_a$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$0$feed$abc$line_a$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$0$feed$abc$line_a$line
-module top$lanes$0$feed$abc$line_a$line$one(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_a
+module top$lanes$0$feed$abc$line_a$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -665,8 +647,42 @@ module top$lanes$0$feed$abc$line_a$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_a$line$one
-module top$lanes$0$feed$abc$line_a$line$ptr(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_a$bound
+module top$lanes$0$feed$abc$line_a$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_a$is_one
+module top$lanes$0$feed$abc$line_a$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_a$is_short
+module top$lanes$0$feed$abc$line_a$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -682,8 +698,25 @@ module top$lanes$0$feed$abc$line_a$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_a$line$ptr
-module top$lanes$0$feed$abc$line_a$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$feed$abc$line_a$one
+module top$lanes$0$feed$abc$line_a$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_a$ptr
+module top$lanes$0$feed$abc$line_a$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -695,19 +728,48 @@ module top$lanes$0$feed$abc$line_a$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[16317:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16317:0];
+    reg [0:0] mem_0_1[16317:0];
+    reg [0:0] mem_0_2[16317:0];
+    reg [0:0] mem_0_3[16317:0];
+    reg [0:0] mem_0_4[16317:0];
+    reg [0:0] mem_0_5[16317:0];
+    reg [0:0] mem_0_6[16317:0];
+    reg [0:0] mem_0_7[16317:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
-endmodule // top$lanes$0$feed$abc$line_a$line$ram
-module top$lanes$0$feed$abc$line_a$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$0$feed$abc$line_a$ram
+module top$lanes$0$feed$abc$line_a$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -723,8 +785,8 @@ module top$lanes$0$feed$abc$line_a$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_a$line$rd_flipped
-module top$lanes$0$feed$abc$line_a$line_last(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_a$rd_flipped
+module top$lanes$0$feed$abc$line_a$short(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -740,24 +802,7 @@ module top$lanes$0$feed$abc$line_a$line_last(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_a$line_last
-module top$lanes$0$feed$abc$line_a$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$feed$abc$line_a$out
+endmodule // top$lanes$0$feed$abc$line_a$short
 module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -768,75 +813,9 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$0$feed$abc$line_b$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$0$feed$abc$line_b$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$0$feed$abc$line_b$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$0$feed$abc$line_b
-module top$lanes$0$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -847,6 +826,9 @@ module top$lanes$0$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -856,13 +838,22 @@ module top$lanes$0$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$0$feed$abc$line_b$line$ram ram(
+    top$lanes$0$feed$abc$line_b$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -871,59 +862,95 @@ module top$lanes$0$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$0$feed$abc$line_b$line$ptr ptr(
+    top$lanes$0$feed$abc$line_b$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$0$feed$abc$line_b$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$0$feed$abc$line_b$line$rd_flipped rd_flipped(
+    top$lanes$0$feed$abc$line_b$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$0$feed$abc$line_b$line$one one(
+    top$lanes$0$feed$abc$line_b$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$0$feed$abc$line_b$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$0$feed$abc$line_b$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$0$feed$abc$line_b$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$0$feed$abc$line_b$line
-module top$lanes$0$feed$abc$line_b$line$one(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_b
+module top$lanes$0$feed$abc$line_b$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -939,8 +966,42 @@ module top$lanes$0$feed$abc$line_b$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_b$line$one
-module top$lanes$0$feed$abc$line_b$line$ptr(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_b$bound
+module top$lanes$0$feed$abc$line_b$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_b$is_one
+module top$lanes$0$feed$abc$line_b$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_b$is_short
+module top$lanes$0$feed$abc$line_b$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -956,8 +1017,25 @@ module top$lanes$0$feed$abc$line_b$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_b$line$ptr
-module top$lanes$0$feed$abc$line_b$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$feed$abc$line_b$one
+module top$lanes$0$feed$abc$line_b$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_b$ptr
+module top$lanes$0$feed$abc$line_b$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -969,20 +1047,28 @@ module top$lanes$0$feed$abc$line_b$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[62:0];
+    reg [7:0] mem_0_0[62:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$0$feed$abc$line_b$line$ram
-module top$lanes$0$feed$abc$line_b$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$0$feed$abc$line_b$ram
+module top$lanes$0$feed$abc$line_b$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -998,8 +1084,8 @@ module top$lanes$0$feed$abc$line_b$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_b$line$rd_flipped
-module top$lanes$0$feed$abc$line_b$line_last(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_b$rd_flipped
+module top$lanes$0$feed$abc$line_b$short(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1015,24 +1101,7 @@ module top$lanes$0$feed$abc$line_b$line_last(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_b$line_last
-module top$lanes$0$feed$abc$line_b$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$feed$abc$line_b$out
+endmodule // top$lanes$0$feed$abc$line_b$short
 module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1043,75 +1112,9 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$0$feed$abc$line_c$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$0$feed$abc$line_c$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$0$feed$abc$line_c$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$0$feed$abc$line_c
-module top$lanes$0$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -1122,6 +1125,9 @@ module top$lanes$0$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -1131,13 +1137,22 @@ module top$lanes$0$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$0$feed$abc$line_c$line$ram ram(
+    top$lanes$0$feed$abc$line_c$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -1146,59 +1161,95 @@ module top$lanes$0$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$0$feed$abc$line_c$line$ptr ptr(
+    top$lanes$0$feed$abc$line_c$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$0$feed$abc$line_c$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$0$feed$abc$line_c$line$rd_flipped rd_flipped(
+    top$lanes$0$feed$abc$line_c$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$0$feed$abc$line_c$line$one one(
+    top$lanes$0$feed$abc$line_c$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$0$feed$abc$line_c$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$0$feed$abc$line_c$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$0$feed$abc$line_c$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$0$feed$abc$line_c$line
-module top$lanes$0$feed$abc$line_c$line$one(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_c
+module top$lanes$0$feed$abc$line_c$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1214,8 +1265,42 @@ module top$lanes$0$feed$abc$line_c$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_c$line$one
-module top$lanes$0$feed$abc$line_c$line$ptr(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_c$bound
+module top$lanes$0$feed$abc$line_c$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$is_one
+module top$lanes$0$feed$abc$line_c$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$is_short
+module top$lanes$0$feed$abc$line_c$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1231,8 +1316,25 @@ module top$lanes$0$feed$abc$line_c$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_c$line$ptr
-module top$lanes$0$feed$abc$line_c$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$feed$abc$line_c$one
+module top$lanes$0$feed$abc$line_c$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$ptr
+module top$lanes$0$feed$abc$line_c$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1244,137 +1346,62 @@ module top$lanes$0$feed$abc$line_c$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[62:0];
+    reg [7:0] mem_0_0[62:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$0$feed$abc$line_c$line$ram
-module top$lanes$0$feed$abc$line_c$line$rd_flipped(d,q,clock);
     
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$feed$abc$line_c$line$rd_flipped
-module top$lanes$0$feed$abc$line_c$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$feed$abc$line_c$line_last
-module top$lanes$0$feed$abc$line_c$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$feed$abc$line_c$out
-module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$0$feed$abc$line_d$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$0$feed$abc$line_d$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$0$feed$abc$line_d$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
     always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$0$feed$abc$line_c$ram
+module top$lanes$0$feed$abc$line_c$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
     end
     
-endmodule // top$lanes$0$feed$abc$line_d
-module top$lanes$0$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$rd_flipped
+module top$lanes$0$feed$abc$line_c$short(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$short
+module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -1386,7 +1413,7 @@ module top$lanes$0$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
     // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -1397,6 +1424,9 @@ module top$lanes$0$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -1406,13 +1436,22 @@ module top$lanes$0$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$0$feed$abc$line_d$line$ram ram(
+    top$lanes$0$feed$abc$line_d$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -1421,59 +1460,95 @@ module top$lanes$0$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$0$feed$abc$line_d$line$ptr ptr(
+    top$lanes$0$feed$abc$line_d$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$0$feed$abc$line_d$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$0$feed$abc$line_d$line$rd_flipped rd_flipped(
+    top$lanes$0$feed$abc$line_d$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$0$feed$abc$line_d$line$one one(
+    top$lanes$0$feed$abc$line_d$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$0$feed$abc$line_d$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$0$feed$abc$line_d$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$0$feed$abc$line_d$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$0$feed$abc$line_d$line
-module top$lanes$0$feed$abc$line_d$line$one(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_d
+module top$lanes$0$feed$abc$line_d$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1489,8 +1564,42 @@ module top$lanes$0$feed$abc$line_d$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_d$line$one
-module top$lanes$0$feed$abc$line_d$line$ptr(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_d$bound
+module top$lanes$0$feed$abc$line_d$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_d$is_one
+module top$lanes$0$feed$abc$line_d$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_d$is_short
+module top$lanes$0$feed$abc$line_d$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1506,8 +1615,25 @@ module top$lanes$0$feed$abc$line_d$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_d$line$ptr
-module top$lanes$0$feed$abc$line_d$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$feed$abc$line_d$one
+module top$lanes$0$feed$abc$line_d$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_d$ptr
+module top$lanes$0$feed$abc$line_d$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1519,19 +1645,48 @@ module top$lanes$0$feed$abc$line_d$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[16318:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16318:0];
+    reg [0:0] mem_0_1[16318:0];
+    reg [0:0] mem_0_2[16318:0];
+    reg [0:0] mem_0_3[16318:0];
+    reg [0:0] mem_0_4[16318:0];
+    reg [0:0] mem_0_5[16318:0];
+    reg [0:0] mem_0_6[16318:0];
+    reg [0:0] mem_0_7[16318:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
-endmodule // top$lanes$0$feed$abc$line_d$line$ram
-module top$lanes$0$feed$abc$line_d$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$0$feed$abc$line_d$ram
+module top$lanes$0$feed$abc$line_d$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1547,8 +1702,8 @@ module top$lanes$0$feed$abc$line_d$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_d$line$rd_flipped
-module top$lanes$0$feed$abc$line_d$line_last(d,q,clock);
+endmodule // top$lanes$0$feed$abc$line_d$rd_flipped
+module top$lanes$0$feed$abc$line_d$short(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1564,24 +1719,7 @@ module top$lanes$0$feed$abc$line_d$line_last(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_d$line_last
-module top$lanes$0$feed$abc$line_d$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$feed$abc$line_d$out
+endmodule // top$lanes$0$feed$abc$line_d$short
 module top$lanes$0$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -2163,75 +2301,9 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$1$feed$abc$line_a$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$1$feed$abc$line_a$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$1$feed$abc$line_a$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$1$feed$abc$line_a
-module top$lanes$1$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbd;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -2242,6 +2314,9 @@ module top$lanes$1$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -2251,13 +2326,22 @@ module top$lanes$1$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$1$feed$abc$line_a$line$ram ram(
+    top$lanes$1$feed$abc$line_a$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -2266,59 +2350,95 @@ module top$lanes$1$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$1$feed$abc$line_a$line$ptr ptr(
+    top$lanes$1$feed$abc$line_a$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$1$feed$abc$line_a$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$1$feed$abc$line_a$line$rd_flipped rd_flipped(
+    top$lanes$1$feed$abc$line_a$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$1$feed$abc$line_a$line$one one(
+    top$lanes$1$feed$abc$line_a$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$1$feed$abc$line_a$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$1$feed$abc$line_a$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$1$feed$abc$line_a$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$1$feed$abc$line_a$line
-module top$lanes$1$feed$abc$line_a$line$one(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_a
+module top$lanes$1$feed$abc$line_a$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2334,8 +2454,42 @@ module top$lanes$1$feed$abc$line_a$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_a$line$one
-module top$lanes$1$feed$abc$line_a$line$ptr(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_a$bound
+module top$lanes$1$feed$abc$line_a$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_a$is_one
+module top$lanes$1$feed$abc$line_a$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_a$is_short
+module top$lanes$1$feed$abc$line_a$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2351,8 +2505,25 @@ module top$lanes$1$feed$abc$line_a$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_a$line$ptr
-module top$lanes$1$feed$abc$line_a$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$feed$abc$line_a$one
+module top$lanes$1$feed$abc$line_a$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_a$ptr
+module top$lanes$1$feed$abc$line_a$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -2364,19 +2535,48 @@ module top$lanes$1$feed$abc$line_a$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[16317:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16317:0];
+    reg [0:0] mem_0_1[16317:0];
+    reg [0:0] mem_0_2[16317:0];
+    reg [0:0] mem_0_3[16317:0];
+    reg [0:0] mem_0_4[16317:0];
+    reg [0:0] mem_0_5[16317:0];
+    reg [0:0] mem_0_6[16317:0];
+    reg [0:0] mem_0_7[16317:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
-endmodule // top$lanes$1$feed$abc$line_a$line$ram
-module top$lanes$1$feed$abc$line_a$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$1$feed$abc$line_a$ram
+module top$lanes$1$feed$abc$line_a$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2392,8 +2592,8 @@ module top$lanes$1$feed$abc$line_a$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_a$line$rd_flipped
-module top$lanes$1$feed$abc$line_a$line_last(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_a$rd_flipped
+module top$lanes$1$feed$abc$line_a$short(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2409,24 +2609,7 @@ module top$lanes$1$feed$abc$line_a$line_last(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_a$line_last
-module top$lanes$1$feed$abc$line_a$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$feed$abc$line_a$out
+endmodule // top$lanes$1$feed$abc$line_a$short
 module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -2437,75 +2620,9 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$1$feed$abc$line_b$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$1$feed$abc$line_b$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$1$feed$abc$line_b$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$1$feed$abc$line_b
-module top$lanes$1$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -2516,6 +2633,9 @@ module top$lanes$1$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -2525,13 +2645,22 @@ module top$lanes$1$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$1$feed$abc$line_b$line$ram ram(
+    top$lanes$1$feed$abc$line_b$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -2540,59 +2669,95 @@ module top$lanes$1$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$1$feed$abc$line_b$line$ptr ptr(
+    top$lanes$1$feed$abc$line_b$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$1$feed$abc$line_b$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$1$feed$abc$line_b$line$rd_flipped rd_flipped(
+    top$lanes$1$feed$abc$line_b$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$1$feed$abc$line_b$line$one one(
+    top$lanes$1$feed$abc$line_b$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$1$feed$abc$line_b$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$1$feed$abc$line_b$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$1$feed$abc$line_b$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$1$feed$abc$line_b$line
-module top$lanes$1$feed$abc$line_b$line$one(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_b
+module top$lanes$1$feed$abc$line_b$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2608,8 +2773,42 @@ module top$lanes$1$feed$abc$line_b$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_b$line$one
-module top$lanes$1$feed$abc$line_b$line$ptr(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_b$bound
+module top$lanes$1$feed$abc$line_b$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_b$is_one
+module top$lanes$1$feed$abc$line_b$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_b$is_short
+module top$lanes$1$feed$abc$line_b$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2625,8 +2824,25 @@ module top$lanes$1$feed$abc$line_b$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_b$line$ptr
-module top$lanes$1$feed$abc$line_b$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$feed$abc$line_b$one
+module top$lanes$1$feed$abc$line_b$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_b$ptr
+module top$lanes$1$feed$abc$line_b$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -2638,20 +2854,28 @@ module top$lanes$1$feed$abc$line_b$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[62:0];
+    reg [7:0] mem_0_0[62:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$1$feed$abc$line_b$line$ram
-module top$lanes$1$feed$abc$line_b$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$1$feed$abc$line_b$ram
+module top$lanes$1$feed$abc$line_b$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2667,8 +2891,8 @@ module top$lanes$1$feed$abc$line_b$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_b$line$rd_flipped
-module top$lanes$1$feed$abc$line_b$line_last(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_b$rd_flipped
+module top$lanes$1$feed$abc$line_b$short(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2684,24 +2908,7 @@ module top$lanes$1$feed$abc$line_b$line_last(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_b$line_last
-module top$lanes$1$feed$abc$line_b$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$feed$abc$line_b$out
+endmodule // top$lanes$1$feed$abc$line_b$short
 module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -2712,75 +2919,9 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$1$feed$abc$line_c$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$1$feed$abc$line_c$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$1$feed$abc$line_c$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$1$feed$abc$line_c
-module top$lanes$1$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -2791,6 +2932,9 @@ module top$lanes$1$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -2800,13 +2944,22 @@ module top$lanes$1$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$1$feed$abc$line_c$line$ram ram(
+    top$lanes$1$feed$abc$line_c$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -2815,59 +2968,95 @@ module top$lanes$1$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$1$feed$abc$line_c$line$ptr ptr(
+    top$lanes$1$feed$abc$line_c$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$1$feed$abc$line_c$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$1$feed$abc$line_c$line$rd_flipped rd_flipped(
+    top$lanes$1$feed$abc$line_c$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$1$feed$abc$line_c$line$one one(
+    top$lanes$1$feed$abc$line_c$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$1$feed$abc$line_c$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$1$feed$abc$line_c$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$1$feed$abc$line_c$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$1$feed$abc$line_c$line
-module top$lanes$1$feed$abc$line_c$line$one(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_c
+module top$lanes$1$feed$abc$line_c$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2883,8 +3072,42 @@ module top$lanes$1$feed$abc$line_c$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_c$line$one
-module top$lanes$1$feed$abc$line_c$line$ptr(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_c$bound
+module top$lanes$1$feed$abc$line_c$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$is_one
+module top$lanes$1$feed$abc$line_c$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$is_short
+module top$lanes$1$feed$abc$line_c$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2900,8 +3123,25 @@ module top$lanes$1$feed$abc$line_c$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_c$line$ptr
-module top$lanes$1$feed$abc$line_c$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$feed$abc$line_c$one
+module top$lanes$1$feed$abc$line_c$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$ptr
+module top$lanes$1$feed$abc$line_c$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -2913,137 +3153,62 @@ module top$lanes$1$feed$abc$line_c$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[62:0];
+    reg [7:0] mem_0_0[62:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$1$feed$abc$line_c$line$ram
-module top$lanes$1$feed$abc$line_c$line$rd_flipped(d,q,clock);
     
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$feed$abc$line_c$line$rd_flipped
-module top$lanes$1$feed$abc$line_c$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$feed$abc$line_c$line_last
-module top$lanes$1$feed$abc$line_c$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$feed$abc$line_c$out
-module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$1$feed$abc$line_d$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$1$feed$abc$line_d$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$1$feed$abc$line_d$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
     always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$1$feed$abc$line_c$ram
+module top$lanes$1$feed$abc$line_c$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
     end
     
-endmodule // top$lanes$1$feed$abc$line_d
-module top$lanes$1$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$rd_flipped
+module top$lanes$1$feed$abc$line_c$short(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$short
+module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -3055,7 +3220,7 @@ module top$lanes$1$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
     // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -3066,6 +3231,9 @@ module top$lanes$1$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -3075,13 +3243,22 @@ module top$lanes$1$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$1$feed$abc$line_d$line$ram ram(
+    top$lanes$1$feed$abc$line_d$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -3090,59 +3267,95 @@ module top$lanes$1$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$1$feed$abc$line_d$line$ptr ptr(
+    top$lanes$1$feed$abc$line_d$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$1$feed$abc$line_d$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$1$feed$abc$line_d$line$rd_flipped rd_flipped(
+    top$lanes$1$feed$abc$line_d$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$1$feed$abc$line_d$line$one one(
+    top$lanes$1$feed$abc$line_d$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$1$feed$abc$line_d$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$1$feed$abc$line_d$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$1$feed$abc$line_d$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$1$feed$abc$line_d$line
-module top$lanes$1$feed$abc$line_d$line$one(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_d
+module top$lanes$1$feed$abc$line_d$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3158,8 +3371,42 @@ module top$lanes$1$feed$abc$line_d$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_d$line$one
-module top$lanes$1$feed$abc$line_d$line$ptr(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_d$bound
+module top$lanes$1$feed$abc$line_d$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_d$is_one
+module top$lanes$1$feed$abc$line_d$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_d$is_short
+module top$lanes$1$feed$abc$line_d$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3175,8 +3422,25 @@ module top$lanes$1$feed$abc$line_d$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_d$line$ptr
-module top$lanes$1$feed$abc$line_d$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$feed$abc$line_d$one
+module top$lanes$1$feed$abc$line_d$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_d$ptr
+module top$lanes$1$feed$abc$line_d$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -3188,19 +3452,48 @@ module top$lanes$1$feed$abc$line_d$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[16318:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16318:0];
+    reg [0:0] mem_0_1[16318:0];
+    reg [0:0] mem_0_2[16318:0];
+    reg [0:0] mem_0_3[16318:0];
+    reg [0:0] mem_0_4[16318:0];
+    reg [0:0] mem_0_5[16318:0];
+    reg [0:0] mem_0_6[16318:0];
+    reg [0:0] mem_0_7[16318:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
-endmodule // top$lanes$1$feed$abc$line_d$line$ram
-module top$lanes$1$feed$abc$line_d$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$1$feed$abc$line_d$ram
+module top$lanes$1$feed$abc$line_d$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3216,8 +3509,8 @@ module top$lanes$1$feed$abc$line_d$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_d$line$rd_flipped
-module top$lanes$1$feed$abc$line_d$line_last(d,q,clock);
+endmodule // top$lanes$1$feed$abc$line_d$rd_flipped
+module top$lanes$1$feed$abc$line_d$short(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3233,24 +3526,7 @@ module top$lanes$1$feed$abc$line_d$line_last(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_d$line_last
-module top$lanes$1$feed$abc$line_d$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$feed$abc$line_d$out
+endmodule // top$lanes$1$feed$abc$line_d$short
 module top$lanes$1$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -3832,75 +4108,9 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$2$feed$abc$line_a$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$2$feed$abc$line_a$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$2$feed$abc$line_a$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$2$feed$abc$line_a
-module top$lanes$2$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbd;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -3911,6 +4121,9 @@ module top$lanes$2$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -3920,13 +4133,22 @@ module top$lanes$2$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$2$feed$abc$line_a$line$ram ram(
+    top$lanes$2$feed$abc$line_a$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -3935,59 +4157,95 @@ module top$lanes$2$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$2$feed$abc$line_a$line$ptr ptr(
+    top$lanes$2$feed$abc$line_a$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$2$feed$abc$line_a$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$2$feed$abc$line_a$line$rd_flipped rd_flipped(
+    top$lanes$2$feed$abc$line_a$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$2$feed$abc$line_a$line$one one(
+    top$lanes$2$feed$abc$line_a$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$2$feed$abc$line_a$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$2$feed$abc$line_a$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$2$feed$abc$line_a$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$2$feed$abc$line_a$line
-module top$lanes$2$feed$abc$line_a$line$one(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_a
+module top$lanes$2$feed$abc$line_a$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4003,8 +4261,42 @@ module top$lanes$2$feed$abc$line_a$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_a$line$one
-module top$lanes$2$feed$abc$line_a$line$ptr(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_a$bound
+module top$lanes$2$feed$abc$line_a$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_a$is_one
+module top$lanes$2$feed$abc$line_a$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_a$is_short
+module top$lanes$2$feed$abc$line_a$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4020,8 +4312,25 @@ module top$lanes$2$feed$abc$line_a$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_a$line$ptr
-module top$lanes$2$feed$abc$line_a$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$feed$abc$line_a$one
+module top$lanes$2$feed$abc$line_a$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_a$ptr
+module top$lanes$2$feed$abc$line_a$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -4033,19 +4342,48 @@ module top$lanes$2$feed$abc$line_a$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[16317:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16317:0];
+    reg [0:0] mem_0_1[16317:0];
+    reg [0:0] mem_0_2[16317:0];
+    reg [0:0] mem_0_3[16317:0];
+    reg [0:0] mem_0_4[16317:0];
+    reg [0:0] mem_0_5[16317:0];
+    reg [0:0] mem_0_6[16317:0];
+    reg [0:0] mem_0_7[16317:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
-endmodule // top$lanes$2$feed$abc$line_a$line$ram
-module top$lanes$2$feed$abc$line_a$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$2$feed$abc$line_a$ram
+module top$lanes$2$feed$abc$line_a$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4061,8 +4399,8 @@ module top$lanes$2$feed$abc$line_a$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_a$line$rd_flipped
-module top$lanes$2$feed$abc$line_a$line_last(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_a$rd_flipped
+module top$lanes$2$feed$abc$line_a$short(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4078,24 +4416,7 @@ module top$lanes$2$feed$abc$line_a$line_last(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_a$line_last
-module top$lanes$2$feed$abc$line_a$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$feed$abc$line_a$out
+endmodule // top$lanes$2$feed$abc$line_a$short
 module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -4106,75 +4427,9 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$2$feed$abc$line_b$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$2$feed$abc$line_b$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$2$feed$abc$line_b$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$2$feed$abc$line_b
-module top$lanes$2$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -4185,6 +4440,9 @@ module top$lanes$2$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -4194,13 +4452,22 @@ module top$lanes$2$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$2$feed$abc$line_b$line$ram ram(
+    top$lanes$2$feed$abc$line_b$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -4209,59 +4476,95 @@ module top$lanes$2$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$2$feed$abc$line_b$line$ptr ptr(
+    top$lanes$2$feed$abc$line_b$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$2$feed$abc$line_b$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$2$feed$abc$line_b$line$rd_flipped rd_flipped(
+    top$lanes$2$feed$abc$line_b$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$2$feed$abc$line_b$line$one one(
+    top$lanes$2$feed$abc$line_b$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$2$feed$abc$line_b$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$2$feed$abc$line_b$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$2$feed$abc$line_b$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$2$feed$abc$line_b$line
-module top$lanes$2$feed$abc$line_b$line$one(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_b
+module top$lanes$2$feed$abc$line_b$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4277,8 +4580,42 @@ module top$lanes$2$feed$abc$line_b$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_b$line$one
-module top$lanes$2$feed$abc$line_b$line$ptr(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_b$bound
+module top$lanes$2$feed$abc$line_b$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_b$is_one
+module top$lanes$2$feed$abc$line_b$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_b$is_short
+module top$lanes$2$feed$abc$line_b$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4294,8 +4631,25 @@ module top$lanes$2$feed$abc$line_b$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_b$line$ptr
-module top$lanes$2$feed$abc$line_b$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$feed$abc$line_b$one
+module top$lanes$2$feed$abc$line_b$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_b$ptr
+module top$lanes$2$feed$abc$line_b$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -4307,20 +4661,28 @@ module top$lanes$2$feed$abc$line_b$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[62:0];
+    reg [7:0] mem_0_0[62:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$2$feed$abc$line_b$line$ram
-module top$lanes$2$feed$abc$line_b$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$2$feed$abc$line_b$ram
+module top$lanes$2$feed$abc$line_b$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4336,8 +4698,8 @@ module top$lanes$2$feed$abc$line_b$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_b$line$rd_flipped
-module top$lanes$2$feed$abc$line_b$line_last(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_b$rd_flipped
+module top$lanes$2$feed$abc$line_b$short(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4353,24 +4715,7 @@ module top$lanes$2$feed$abc$line_b$line_last(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_b$line_last
-module top$lanes$2$feed$abc$line_b$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$feed$abc$line_b$out
+endmodule // top$lanes$2$feed$abc$line_b$short
 module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -4381,75 +4726,9 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$2$feed$abc$line_c$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$2$feed$abc$line_c$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$2$feed$abc$line_c$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$2$feed$abc$line_c
-module top$lanes$2$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -4460,6 +4739,9 @@ module top$lanes$2$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -4469,13 +4751,22 @@ module top$lanes$2$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$2$feed$abc$line_c$line$ram ram(
+    top$lanes$2$feed$abc$line_c$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -4484,59 +4775,95 @@ module top$lanes$2$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$2$feed$abc$line_c$line$ptr ptr(
+    top$lanes$2$feed$abc$line_c$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$2$feed$abc$line_c$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$2$feed$abc$line_c$line$rd_flipped rd_flipped(
+    top$lanes$2$feed$abc$line_c$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$2$feed$abc$line_c$line$one one(
+    top$lanes$2$feed$abc$line_c$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$2$feed$abc$line_c$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$2$feed$abc$line_c$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$2$feed$abc$line_c$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$2$feed$abc$line_c$line
-module top$lanes$2$feed$abc$line_c$line$one(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_c
+module top$lanes$2$feed$abc$line_c$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4552,8 +4879,42 @@ module top$lanes$2$feed$abc$line_c$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_c$line$one
-module top$lanes$2$feed$abc$line_c$line$ptr(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_c$bound
+module top$lanes$2$feed$abc$line_c$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$is_one
+module top$lanes$2$feed$abc$line_c$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$is_short
+module top$lanes$2$feed$abc$line_c$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4569,8 +4930,25 @@ module top$lanes$2$feed$abc$line_c$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_c$line$ptr
-module top$lanes$2$feed$abc$line_c$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$feed$abc$line_c$one
+module top$lanes$2$feed$abc$line_c$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$ptr
+module top$lanes$2$feed$abc$line_c$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -4582,137 +4960,62 @@ module top$lanes$2$feed$abc$line_c$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[62:0];
+    reg [7:0] mem_0_0[62:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$2$feed$abc$line_c$line$ram
-module top$lanes$2$feed$abc$line_c$line$rd_flipped(d,q,clock);
     
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$feed$abc$line_c$line$rd_flipped
-module top$lanes$2$feed$abc$line_c$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$feed$abc$line_c$line_last
-module top$lanes$2$feed$abc$line_c$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$feed$abc$line_c$out
-module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$2$feed$abc$line_d$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$2$feed$abc$line_d$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$2$feed$abc$line_d$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
     always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$2$feed$abc$line_c$ram
+module top$lanes$2$feed$abc$line_c$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
     end
     
-endmodule // top$lanes$2$feed$abc$line_d
-module top$lanes$2$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$rd_flipped
+module top$lanes$2$feed$abc$line_c$short(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$short
+module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -4724,7 +5027,7 @@ module top$lanes$2$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
     // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -4735,6 +5038,9 @@ module top$lanes$2$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -4744,13 +5050,22 @@ module top$lanes$2$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$2$feed$abc$line_d$line$ram ram(
+    top$lanes$2$feed$abc$line_d$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -4759,59 +5074,95 @@ module top$lanes$2$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$2$feed$abc$line_d$line$ptr ptr(
+    top$lanes$2$feed$abc$line_d$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$2$feed$abc$line_d$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$2$feed$abc$line_d$line$rd_flipped rd_flipped(
+    top$lanes$2$feed$abc$line_d$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$2$feed$abc$line_d$line$one one(
+    top$lanes$2$feed$abc$line_d$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$2$feed$abc$line_d$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$2$feed$abc$line_d$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$2$feed$abc$line_d$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$2$feed$abc$line_d$line
-module top$lanes$2$feed$abc$line_d$line$one(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_d
+module top$lanes$2$feed$abc$line_d$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4827,8 +5178,42 @@ module top$lanes$2$feed$abc$line_d$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_d$line$one
-module top$lanes$2$feed$abc$line_d$line$ptr(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_d$bound
+module top$lanes$2$feed$abc$line_d$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_d$is_one
+module top$lanes$2$feed$abc$line_d$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_d$is_short
+module top$lanes$2$feed$abc$line_d$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4844,8 +5229,25 @@ module top$lanes$2$feed$abc$line_d$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_d$line$ptr
-module top$lanes$2$feed$abc$line_d$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$feed$abc$line_d$one
+module top$lanes$2$feed$abc$line_d$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_d$ptr
+module top$lanes$2$feed$abc$line_d$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -4857,19 +5259,48 @@ module top$lanes$2$feed$abc$line_d$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[16318:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16318:0];
+    reg [0:0] mem_0_1[16318:0];
+    reg [0:0] mem_0_2[16318:0];
+    reg [0:0] mem_0_3[16318:0];
+    reg [0:0] mem_0_4[16318:0];
+    reg [0:0] mem_0_5[16318:0];
+    reg [0:0] mem_0_6[16318:0];
+    reg [0:0] mem_0_7[16318:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
-endmodule // top$lanes$2$feed$abc$line_d$line$ram
-module top$lanes$2$feed$abc$line_d$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$2$feed$abc$line_d$ram
+module top$lanes$2$feed$abc$line_d$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4885,8 +5316,8 @@ module top$lanes$2$feed$abc$line_d$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_d$line$rd_flipped
-module top$lanes$2$feed$abc$line_d$line_last(d,q,clock);
+endmodule // top$lanes$2$feed$abc$line_d$rd_flipped
+module top$lanes$2$feed$abc$line_d$short(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4902,24 +5333,7 @@ module top$lanes$2$feed$abc$line_d$line_last(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_d$line_last
-module top$lanes$2$feed$abc$line_d$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$feed$abc$line_d$out
+endmodule // top$lanes$2$feed$abc$line_d$short
 module top$lanes$2$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -5501,75 +5915,9 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$3$feed$abc$line_a$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$3$feed$abc$line_a$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$3$feed$abc$line_a$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$3$feed$abc$line_a
-module top$lanes$3$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbd;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -5580,6 +5928,9 @@ module top$lanes$3$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -5589,13 +5940,22 @@ module top$lanes$3$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$3$feed$abc$line_a$line$ram ram(
+    top$lanes$3$feed$abc$line_a$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -5604,59 +5964,95 @@ module top$lanes$3$feed$abc$line_a$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$3$feed$abc$line_a$line$ptr ptr(
+    top$lanes$3$feed$abc$line_a$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$3$feed$abc$line_a$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$3$feed$abc$line_a$line$rd_flipped rd_flipped(
+    top$lanes$3$feed$abc$line_a$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$3$feed$abc$line_a$line$one one(
+    top$lanes$3$feed$abc$line_a$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$3$feed$abc$line_a$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$3$feed$abc$line_a$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$3$feed$abc$line_a$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$3$feed$abc$line_a$line
-module top$lanes$3$feed$abc$line_a$line$one(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_a
+module top$lanes$3$feed$abc$line_a$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -5672,8 +6068,42 @@ module top$lanes$3$feed$abc$line_a$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_a$line$one
-module top$lanes$3$feed$abc$line_a$line$ptr(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_a$bound
+module top$lanes$3$feed$abc$line_a$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_a$is_one
+module top$lanes$3$feed$abc$line_a$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_a$is_short
+module top$lanes$3$feed$abc$line_a$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -5689,8 +6119,25 @@ module top$lanes$3$feed$abc$line_a$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_a$line$ptr
-module top$lanes$3$feed$abc$line_a$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$feed$abc$line_a$one
+module top$lanes$3$feed$abc$line_a$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_a$ptr
+module top$lanes$3$feed$abc$line_a$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -5702,19 +6149,48 @@ module top$lanes$3$feed$abc$line_a$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[16317:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16317:0];
+    reg [0:0] mem_0_1[16317:0];
+    reg [0:0] mem_0_2[16317:0];
+    reg [0:0] mem_0_3[16317:0];
+    reg [0:0] mem_0_4[16317:0];
+    reg [0:0] mem_0_5[16317:0];
+    reg [0:0] mem_0_6[16317:0];
+    reg [0:0] mem_0_7[16317:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
-endmodule // top$lanes$3$feed$abc$line_a$line$ram
-module top$lanes$3$feed$abc$line_a$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$3$feed$abc$line_a$ram
+module top$lanes$3$feed$abc$line_a$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -5730,8 +6206,8 @@ module top$lanes$3$feed$abc$line_a$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_a$line$rd_flipped
-module top$lanes$3$feed$abc$line_a$line_last(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_a$rd_flipped
+module top$lanes$3$feed$abc$line_a$short(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -5747,24 +6223,7 @@ module top$lanes$3$feed$abc$line_a$line_last(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_a$line_last
-module top$lanes$3$feed$abc$line_a$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$feed$abc$line_a$out
+endmodule // top$lanes$3$feed$abc$line_a$short
 module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -5775,75 +6234,9 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$3$feed$abc$line_b$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$3$feed$abc$line_b$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$3$feed$abc$line_b$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$3$feed$abc$line_b
-module top$lanes$3$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -5854,6 +6247,9 @@ module top$lanes$3$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -5863,13 +6259,22 @@ module top$lanes$3$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$3$feed$abc$line_b$line$ram ram(
+    top$lanes$3$feed$abc$line_b$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -5878,59 +6283,95 @@ module top$lanes$3$feed$abc$line_b$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$3$feed$abc$line_b$line$ptr ptr(
+    top$lanes$3$feed$abc$line_b$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$3$feed$abc$line_b$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$3$feed$abc$line_b$line$rd_flipped rd_flipped(
+    top$lanes$3$feed$abc$line_b$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$3$feed$abc$line_b$line$one one(
+    top$lanes$3$feed$abc$line_b$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$3$feed$abc$line_b$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$3$feed$abc$line_b$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$3$feed$abc$line_b$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$3$feed$abc$line_b$line
-module top$lanes$3$feed$abc$line_b$line$one(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_b
+module top$lanes$3$feed$abc$line_b$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -5946,8 +6387,42 @@ module top$lanes$3$feed$abc$line_b$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_b$line$one
-module top$lanes$3$feed$abc$line_b$line$ptr(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_b$bound
+module top$lanes$3$feed$abc$line_b$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_b$is_one
+module top$lanes$3$feed$abc$line_b$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_b$is_short
+module top$lanes$3$feed$abc$line_b$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -5963,8 +6438,25 @@ module top$lanes$3$feed$abc$line_b$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_b$line$ptr
-module top$lanes$3$feed$abc$line_b$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$feed$abc$line_b$one
+module top$lanes$3$feed$abc$line_b$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_b$ptr
+module top$lanes$3$feed$abc$line_b$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -5976,20 +6468,28 @@ module top$lanes$3$feed$abc$line_b$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[62:0];
+    reg [7:0] mem_0_0[62:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$3$feed$abc$line_b$line$ram
-module top$lanes$3$feed$abc$line_b$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$3$feed$abc$line_b$ram
+module top$lanes$3$feed$abc$line_b$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6005,8 +6505,8 @@ module top$lanes$3$feed$abc$line_b$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_b$line$rd_flipped
-module top$lanes$3$feed$abc$line_b$line_last(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_b$rd_flipped
+module top$lanes$3$feed$abc$line_b$short(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6022,24 +6522,7 @@ module top$lanes$3$feed$abc$line_b$line_last(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_b$line_last
-module top$lanes$3$feed$abc$line_b$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$feed$abc$line_b$out
+endmodule // top$lanes$3$feed$abc$line_b$short
 module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -6050,75 +6533,9 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$3$feed$abc$line_c$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$3$feed$abc$line_c$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$3$feed$abc$line_c$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$3$feed$abc$line_c
-module top$lanes$3$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -6129,6 +6546,9 @@ module top$lanes$3$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -6138,13 +6558,22 @@ module top$lanes$3$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$3$feed$abc$line_c$line$ram ram(
+    top$lanes$3$feed$abc$line_c$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -6153,59 +6582,95 @@ module top$lanes$3$feed$abc$line_c$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$3$feed$abc$line_c$line$ptr ptr(
+    top$lanes$3$feed$abc$line_c$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$3$feed$abc$line_c$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$3$feed$abc$line_c$line$rd_flipped rd_flipped(
+    top$lanes$3$feed$abc$line_c$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$3$feed$abc$line_c$line$one one(
+    top$lanes$3$feed$abc$line_c$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$3$feed$abc$line_c$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$3$feed$abc$line_c$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$3$feed$abc$line_c$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$3$feed$abc$line_c$line
-module top$lanes$3$feed$abc$line_c$line$one(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_c
+module top$lanes$3$feed$abc$line_c$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6221,8 +6686,42 @@ module top$lanes$3$feed$abc$line_c$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_c$line$one
-module top$lanes$3$feed$abc$line_c$line$ptr(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_c$bound
+module top$lanes$3$feed$abc$line_c$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$is_one
+module top$lanes$3$feed$abc$line_c$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$is_short
+module top$lanes$3$feed$abc$line_c$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6238,8 +6737,25 @@ module top$lanes$3$feed$abc$line_c$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_c$line$ptr
-module top$lanes$3$feed$abc$line_c$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$feed$abc$line_c$one
+module top$lanes$3$feed$abc$line_c$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$ptr
+module top$lanes$3$feed$abc$line_c$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -6251,137 +6767,62 @@ module top$lanes$3$feed$abc$line_c$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[62:0];
+    reg [7:0] mem_0_0[62:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$3$feed$abc$line_c$line$ram
-module top$lanes$3$feed$abc$line_c$line$rd_flipped(d,q,clock);
     
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$feed$abc$line_c$line$rd_flipped
-module top$lanes$3$feed$abc$line_c$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$feed$abc$line_c$line_last
-module top$lanes$3$feed$abc$line_c$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$feed$abc$line_c$out
-module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [15:0] data_in;
-    input wire  write_enable;
-    output reg  [15:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
-    localparam  mask = 16'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [15:0] line$data_in;
-    reg  line$write_enable;
-    wire  [15:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [15:0] out$d;
-    wire  [15:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$3$feed$abc$line_d$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$3$feed$abc$line_d$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$3$feed$abc$line_d$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
     always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$3$feed$abc$line_c$ram
+module top$lanes$3$feed$abc$line_c$rd_flipped(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
     end
     
-endmodule // top$lanes$3$feed$abc$line_d
-module top$lanes$3$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last);
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$rd_flipped
+module top$lanes$3$feed$abc$line_c$short(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$short
+module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
     input wire  clock;
@@ -6393,7 +6834,7 @@ module top$lanes$3$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
     // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
     // Stub signals
@@ -6404,6 +6845,9 @@ module top$lanes$3$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [15:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -6413,13 +6857,22 @@ module top$lanes$3$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] short$d;
+    wire  [15:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$3$feed$abc$line_d$line$ram ram(
+    top$lanes$3$feed$abc$line_d$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -6428,59 +6881,95 @@ module top$lanes$3$feed$abc$line_d$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$3$feed$abc$line_d$line$ptr ptr(
+    top$lanes$3$feed$abc$line_d$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$3$feed$abc$line_d$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$3$feed$abc$line_d$line$rd_flipped rd_flipped(
+    top$lanes$3$feed$abc$line_d$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$3$feed$abc$line_d$line$one one(
+    top$lanes$3$feed$abc$line_d$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$3$feed$abc$line_d$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$3$feed$abc$line_d$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$3$feed$abc$line_d$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [15:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$3$feed$abc$line_d$line
-module top$lanes$3$feed$abc$line_d$line$one(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_d
+module top$lanes$3$feed$abc$line_d$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6496,8 +6985,42 @@ module top$lanes$3$feed$abc$line_d$line$one(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_d$line$one
-module top$lanes$3$feed$abc$line_d$line$ptr(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_d$bound
+module top$lanes$3$feed$abc$line_d$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_d$is_one
+module top$lanes$3$feed$abc$line_d$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_d$is_short
+module top$lanes$3$feed$abc$line_d$one(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6513,8 +7036,25 @@ module top$lanes$3$feed$abc$line_d$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_d$line$ptr
-module top$lanes$3$feed$abc$line_d$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$feed$abc$line_d$one
+module top$lanes$3$feed$abc$line_d$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_d$ptr
+module top$lanes$3$feed$abc$line_d$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -6526,19 +7066,48 @@ module top$lanes$3$feed$abc$line_d$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[16318:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16318:0];
+    reg [0:0] mem_0_1[16318:0];
+    reg [0:0] mem_0_2[16318:0];
+    reg [0:0] mem_0_3[16318:0];
+    reg [0:0] mem_0_4[16318:0];
+    reg [0:0] mem_0_5[16318:0];
+    reg [0:0] mem_0_6[16318:0];
+    reg [0:0] mem_0_7[16318:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
-endmodule // top$lanes$3$feed$abc$line_d$line$ram
-module top$lanes$3$feed$abc$line_d$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$3$feed$abc$line_d$ram
+module top$lanes$3$feed$abc$line_d$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6554,8 +7123,8 @@ module top$lanes$3$feed$abc$line_d$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_d$line$rd_flipped
-module top$lanes$3$feed$abc$line_d$line_last(d,q,clock);
+endmodule // top$lanes$3$feed$abc$line_d$rd_flipped
+module top$lanes$3$feed$abc$line_d$short(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6571,24 +7140,7 @@ module top$lanes$3$feed$abc$line_d$line_last(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_d$line_last
-module top$lanes$3$feed$abc$line_d$out(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$feed$abc$line_d$out
+endmodule // top$lanes$3$feed$abc$line_d$short
 module top$lanes$3$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments

@@ -1044,6 +1044,18 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -1140,9 +1152,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -1161,12 +1173,8 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -1201,6 +1209,26 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$0$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$cfb$lanes$0$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$cfb$lanes$0$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$cfb$lanes$0$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$cfb$lanes$0$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -1342,10 +1370,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$cfb$lanes$0$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$cfb$lanes$0$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$cfb$lanes$0$sr_q sr_q(
         .d(sr_q$d),
@@ -1382,7 +1410,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -1404,6 +1432,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -1416,7 +1448,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -1438,6 +1470,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -1445,12 +1481,12 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -1547,28 +1583,28 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -1584,7 +1620,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -1594,11 +1630,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -1742,6 +1778,23 @@ module top$cfb$lanes$0$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$addr_q2
+module top$cfb$lanes$0$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$border
 module top$cfb$lanes$0$bx_q(d,q,clock);
     
     // Module arguments
@@ -1861,6 +1914,23 @@ module top$cfb$lanes$0$edge_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$edge_q
+module top$cfb$lanes$0$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$ext_q
 module top$cfb$lanes$0$face_q(d,q,clock);
     
     // Module arguments
@@ -2022,6 +2092,57 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
        end
     end
 endmodule // top$cfb$lanes$0$memory
+module top$cfb$lanes$0$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$nx_last
+module top$cfb$lanes$0$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$ny_last
+module top$cfb$lanes$0$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$nz_last
 module top$cfb$lanes$0$pad_q(d,q,clock);
     
     // Module arguments
@@ -2158,23 +2279,6 @@ module top$cfb$lanes$0$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$sr_q
-module top$cfb$lanes$0$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$cfb$lanes$0$value_q
 module top$cfb$lanes$0$x_q(d,q,clock);
     
     // Module arguments
@@ -2288,6 +2392,18 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -2384,9 +2500,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -2405,12 +2521,8 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -2445,6 +2557,26 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$1$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$cfb$lanes$1$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$cfb$lanes$1$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$cfb$lanes$1$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$cfb$lanes$1$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -2586,10 +2718,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$cfb$lanes$1$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$cfb$lanes$1$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$cfb$lanes$1$sr_q sr_q(
         .d(sr_q$d),
@@ -2626,7 +2758,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -2648,6 +2780,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -2660,7 +2796,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -2682,6 +2818,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -2689,12 +2829,12 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -2791,28 +2931,28 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -2828,7 +2968,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -2838,11 +2978,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -2986,6 +3126,23 @@ module top$cfb$lanes$1$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$addr_q2
+module top$cfb$lanes$1$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$border
 module top$cfb$lanes$1$bx_q(d,q,clock);
     
     // Module arguments
@@ -3105,6 +3262,23 @@ module top$cfb$lanes$1$edge_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$edge_q
+module top$cfb$lanes$1$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$ext_q
 module top$cfb$lanes$1$face_q(d,q,clock);
     
     // Module arguments
@@ -3266,6 +3440,57 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
        end
     end
 endmodule // top$cfb$lanes$1$memory
+module top$cfb$lanes$1$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$nx_last
+module top$cfb$lanes$1$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$ny_last
+module top$cfb$lanes$1$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$nz_last
 module top$cfb$lanes$1$pad_q(d,q,clock);
     
     // Module arguments
@@ -3402,23 +3627,6 @@ module top$cfb$lanes$1$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$sr_q
-module top$cfb$lanes$1$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$cfb$lanes$1$value_q
 module top$cfb$lanes$1$x_q(d,q,clock);
     
     // Module arguments
@@ -3532,6 +3740,18 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -3628,9 +3848,9 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -3649,12 +3869,8 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -3689,6 +3905,26 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$2$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$cfb$lanes$2$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$cfb$lanes$2$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$cfb$lanes$2$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$cfb$lanes$2$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -3830,10 +4066,10 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$cfb$lanes$2$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$cfb$lanes$2$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$cfb$lanes$2$sr_q sr_q(
         .d(sr_q$d),
@@ -3870,7 +4106,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -3892,6 +4128,10 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -3904,7 +4144,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -3926,6 +4166,10 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -3933,12 +4177,12 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -4035,28 +4279,28 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -4072,7 +4316,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -4082,11 +4326,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -4230,6 +4474,23 @@ module top$cfb$lanes$2$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$addr_q2
+module top$cfb$lanes$2$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$border
 module top$cfb$lanes$2$bx_q(d,q,clock);
     
     // Module arguments
@@ -4349,6 +4610,23 @@ module top$cfb$lanes$2$edge_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$edge_q
+module top$cfb$lanes$2$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$ext_q
 module top$cfb$lanes$2$face_q(d,q,clock);
     
     // Module arguments
@@ -4510,6 +4788,57 @@ module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,wr
        end
     end
 endmodule // top$cfb$lanes$2$memory
+module top$cfb$lanes$2$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$nx_last
+module top$cfb$lanes$2$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$ny_last
+module top$cfb$lanes$2$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$nz_last
 module top$cfb$lanes$2$pad_q(d,q,clock);
     
     // Module arguments
@@ -4646,23 +4975,6 @@ module top$cfb$lanes$2$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$sr_q
-module top$cfb$lanes$2$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$cfb$lanes$2$value_q
 module top$cfb$lanes$2$x_q(d,q,clock);
     
     // Module arguments
@@ -4776,6 +5088,18 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -4872,9 +5196,9 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -4893,12 +5217,8 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -4933,6 +5253,26 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$3$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$cfb$lanes$3$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$cfb$lanes$3$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$cfb$lanes$3$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$cfb$lanes$3$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -5074,10 +5414,10 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$cfb$lanes$3$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$cfb$lanes$3$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$cfb$lanes$3$sr_q sr_q(
         .d(sr_q$d),
@@ -5114,7 +5454,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -5136,6 +5476,10 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -5148,7 +5492,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -5170,6 +5514,10 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -5177,12 +5525,12 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -5279,28 +5627,28 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -5316,7 +5664,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -5326,11 +5674,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -5474,6 +5822,23 @@ module top$cfb$lanes$3$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$addr_q2
+module top$cfb$lanes$3$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$border
 module top$cfb$lanes$3$bx_q(d,q,clock);
     
     // Module arguments
@@ -5593,6 +5958,23 @@ module top$cfb$lanes$3$edge_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$edge_q
+module top$cfb$lanes$3$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$ext_q
 module top$cfb$lanes$3$face_q(d,q,clock);
     
     // Module arguments
@@ -5754,6 +6136,57 @@ module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,wr
        end
     end
 endmodule // top$cfb$lanes$3$memory
+module top$cfb$lanes$3$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$nx_last
+module top$cfb$lanes$3$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$ny_last
+module top$cfb$lanes$3$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$nz_last
 module top$cfb$lanes$3$pad_q(d,q,clock);
     
     // Module arguments
@@ -5890,23 +6323,6 @@ module top$cfb$lanes$3$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$sr_q
-module top$cfb$lanes$3$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$cfb$lanes$3$value_q
 module top$cfb$lanes$3$x_q(d,q,clock);
     
     // Module arguments
@@ -7412,6 +7828,18 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -7508,9 +7936,9 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -7529,12 +7957,8 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -7569,6 +7993,26 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$0$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$late$lanes$0$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$late$lanes$0$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$late$lanes$0$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$late$lanes$0$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -7710,10 +8154,10 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$late$lanes$0$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$late$lanes$0$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$late$lanes$0$sr_q sr_q(
         .d(sr_q$d),
@@ -7750,7 +8194,7 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -7772,6 +8216,10 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -7784,7 +8232,7 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -7806,6 +8254,10 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -7813,12 +8265,12 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -7915,28 +8367,28 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -7952,7 +8404,7 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -7962,11 +8414,11 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -8110,6 +8562,23 @@ module top$late$lanes$0$addr_q2(d,q,clock);
     end
           
 endmodule // top$late$lanes$0$addr_q2
+module top$late$lanes$0$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$border
 module top$late$lanes$0$bx_q(d,q,clock);
     
     // Module arguments
@@ -8229,6 +8698,23 @@ module top$late$lanes$0$edge_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$0$edge_q
+module top$late$lanes$0$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$ext_q
 module top$late$lanes$0$face_q(d,q,clock);
     
     // Module arguments
@@ -8390,6 +8876,57 @@ module top$late$lanes$0$memory(read_address,read_clock,read_data,write_address,w
        end
     end
 endmodule // top$late$lanes$0$memory
+module top$late$lanes$0$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$nx_last
+module top$late$lanes$0$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$ny_last
+module top$late$lanes$0$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$nz_last
 module top$late$lanes$0$pad_q(d,q,clock);
     
     // Module arguments
@@ -8526,23 +9063,6 @@ module top$late$lanes$0$sr_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$0$sr_q
-module top$late$lanes$0$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$late$lanes$0$value_q
 module top$late$lanes$0$x_q(d,q,clock);
     
     // Module arguments
@@ -8656,6 +9176,18 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -8752,9 +9284,9 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -8773,12 +9305,8 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -8813,6 +9341,26 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$1$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$late$lanes$1$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$late$lanes$1$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$late$lanes$1$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$late$lanes$1$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -8954,10 +9502,10 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$late$lanes$1$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$late$lanes$1$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$late$lanes$1$sr_q sr_q(
         .d(sr_q$d),
@@ -8994,7 +9542,7 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -9016,6 +9564,10 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -9028,7 +9580,7 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -9050,6 +9602,10 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -9057,12 +9613,12 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -9159,28 +9715,28 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -9196,7 +9752,7 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -9206,11 +9762,11 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -9354,6 +9910,23 @@ module top$late$lanes$1$addr_q2(d,q,clock);
     end
           
 endmodule // top$late$lanes$1$addr_q2
+module top$late$lanes$1$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$border
 module top$late$lanes$1$bx_q(d,q,clock);
     
     // Module arguments
@@ -9473,6 +10046,23 @@ module top$late$lanes$1$edge_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$1$edge_q
+module top$late$lanes$1$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$ext_q
 module top$late$lanes$1$face_q(d,q,clock);
     
     // Module arguments
@@ -9634,6 +10224,57 @@ module top$late$lanes$1$memory(read_address,read_clock,read_data,write_address,w
        end
     end
 endmodule // top$late$lanes$1$memory
+module top$late$lanes$1$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$nx_last
+module top$late$lanes$1$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$ny_last
+module top$late$lanes$1$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$nz_last
 module top$late$lanes$1$pad_q(d,q,clock);
     
     // Module arguments
@@ -9770,23 +10411,6 @@ module top$late$lanes$1$sr_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$1$sr_q
-module top$late$lanes$1$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$late$lanes$1$value_q
 module top$late$lanes$1$x_q(d,q,clock);
     
     // Module arguments
@@ -9900,6 +10524,18 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -9996,9 +10632,9 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -10017,12 +10653,8 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -10057,6 +10689,26 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$2$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$late$lanes$2$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$late$lanes$2$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$late$lanes$2$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$late$lanes$2$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -10198,10 +10850,10 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$late$lanes$2$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$late$lanes$2$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$late$lanes$2$sr_q sr_q(
         .d(sr_q$d),
@@ -10238,7 +10890,7 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -10260,6 +10912,10 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -10272,7 +10928,7 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -10294,6 +10950,10 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -10301,12 +10961,12 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -10403,28 +11063,28 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -10440,7 +11100,7 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -10450,11 +11110,11 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -10598,6 +11258,23 @@ module top$late$lanes$2$addr_q2(d,q,clock);
     end
           
 endmodule // top$late$lanes$2$addr_q2
+module top$late$lanes$2$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$border
 module top$late$lanes$2$bx_q(d,q,clock);
     
     // Module arguments
@@ -10717,6 +11394,23 @@ module top$late$lanes$2$edge_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$2$edge_q
+module top$late$lanes$2$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$ext_q
 module top$late$lanes$2$face_q(d,q,clock);
     
     // Module arguments
@@ -10878,6 +11572,57 @@ module top$late$lanes$2$memory(read_address,read_clock,read_data,write_address,w
        end
     end
 endmodule // top$late$lanes$2$memory
+module top$late$lanes$2$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$nx_last
+module top$late$lanes$2$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$ny_last
+module top$late$lanes$2$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$nz_last
 module top$late$lanes$2$pad_q(d,q,clock);
     
     // Module arguments
@@ -11014,23 +11759,6 @@ module top$late$lanes$2$sr_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$2$sr_q
-module top$late$lanes$2$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$late$lanes$2$value_q
 module top$late$lanes$2$x_q(d,q,clock);
     
     // Module arguments
@@ -11144,6 +11872,18 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -11240,9 +11980,9 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -11261,12 +12001,8 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -11301,6 +12037,26 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$3$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$late$lanes$3$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$late$lanes$3$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$late$lanes$3$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$late$lanes$3$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -11442,10 +12198,10 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$late$lanes$3$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$late$lanes$3$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$late$lanes$3$sr_q sr_q(
         .d(sr_q$d),
@@ -11482,7 +12238,7 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -11504,6 +12260,10 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -11516,7 +12276,7 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -11538,6 +12298,10 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -11545,12 +12309,12 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -11647,28 +12411,28 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -11684,7 +12448,7 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -11694,11 +12458,11 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -11842,6 +12606,23 @@ module top$late$lanes$3$addr_q2(d,q,clock);
     end
           
 endmodule // top$late$lanes$3$addr_q2
+module top$late$lanes$3$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$border
 module top$late$lanes$3$bx_q(d,q,clock);
     
     // Module arguments
@@ -11961,6 +12742,23 @@ module top$late$lanes$3$edge_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$3$edge_q
+module top$late$lanes$3$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$ext_q
 module top$late$lanes$3$face_q(d,q,clock);
     
     // Module arguments
@@ -12122,6 +12920,57 @@ module top$late$lanes$3$memory(read_address,read_clock,read_data,write_address,w
        end
     end
 endmodule // top$late$lanes$3$memory
+module top$late$lanes$3$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$nx_last
+module top$late$lanes$3$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$ny_last
+module top$late$lanes$3$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$nz_last
 module top$late$lanes$3$pad_q(d,q,clock);
     
     // Module arguments
@@ -12258,23 +13107,6 @@ module top$late$lanes$3$sr_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$3$sr_q
-module top$late$lanes$3$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$late$lanes$3$value_q
 module top$late$lanes$3$x_q(d,q,clock);
     
     // Module arguments

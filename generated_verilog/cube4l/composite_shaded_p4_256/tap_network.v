@@ -962,75 +962,9 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff00ff00ff00ff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$0$taps$rows$beam0$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$0$taps$rows$beam0$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$0$taps$rows$beam0$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$0$taps$rows$beam0
-module top$lanes$0$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
@@ -1041,6 +975,9 @@ module top$lanes$0$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -1050,13 +987,22 @@ module top$lanes$0$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$0$taps$rows$beam0$line$ram ram(
+    top$lanes$0$taps$rows$beam0$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -1065,76 +1011,95 @@ module top$lanes$0$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$0$taps$rows$beam0$line$ptr ptr(
+    top$lanes$0$taps$rows$beam0$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$0$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$0$taps$rows$beam0$line$rd_flipped rd_flipped(
+    top$lanes$0$taps$rows$beam0$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$0$taps$rows$beam0$line$one one(
+    top$lanes$0$taps$rows$beam0$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$0$taps$rows$beam0$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$0$taps$rows$beam0$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$0$taps$rows$beam0$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$0$taps$rows$beam0$line
-module top$lanes$0$taps$rows$beam0$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$beam0$line$one
-module top$lanes$0$taps$rows$beam0$line$ptr(d,q,clock);
+endmodule // top$lanes$0$taps$rows$beam0
+module top$lanes$0$taps$rows$beam0$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1150,8 +1115,76 @@ module top$lanes$0$taps$rows$beam0$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam0$line$ptr
-module top$lanes$0$taps$rows$beam0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$taps$rows$beam0$bound
+module top$lanes$0$taps$rows$beam0$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$is_one
+module top$lanes$0$taps$rows$beam0$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$is_short
+module top$lanes$0$taps$rows$beam0$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$one
+module top$lanes$0$taps$rows$beam0$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$ptr
+module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1163,20 +1196,28 @@ module top$lanes$0$taps$rows$beam0$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem[62:0];
+    reg [31:0] mem_0_0[62:0];
+    reg [31:0] rd_0;
+    reg [31:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][31:24], 8'd0, mem[read_address[5:0]][23:16], 8'd0, mem[read_address[5:0]][15:8], 8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[31:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[31:0];
        end
     end
-endmodule // top$lanes$0$taps$rows$beam0$line$ram
-module top$lanes$0$taps$rows$beam0$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$0$taps$rows$beam0$ram
+module top$lanes$0$taps$rows$beam0$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1192,25 +1233,8 @@ module top$lanes$0$taps$rows$beam0$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam0$line$rd_flipped
-module top$lanes$0$taps$rows$beam0$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$beam0$line_last
-module top$lanes$0$taps$rows$beam0$out(d,q,clock);
+endmodule // top$lanes$0$taps$rows$beam0$rd_flipped
+module top$lanes$0$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -1226,7 +1250,7 @@ module top$lanes$0$taps$rows$beam0$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam0$out
+endmodule // top$lanes$0$taps$rows$beam0$short
 module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1237,75 +1261,9 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff00ff00ff00ff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$0$taps$rows$beam1$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$0$taps$rows$beam1$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$0$taps$rows$beam1$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$0$taps$rows$beam1
-module top$lanes$0$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
@@ -1316,6 +1274,9 @@ module top$lanes$0$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -1325,13 +1286,22 @@ module top$lanes$0$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$0$taps$rows$beam1$line$ram ram(
+    top$lanes$0$taps$rows$beam1$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -1340,76 +1310,95 @@ module top$lanes$0$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$0$taps$rows$beam1$line$ptr ptr(
+    top$lanes$0$taps$rows$beam1$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$0$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$0$taps$rows$beam1$line$rd_flipped rd_flipped(
+    top$lanes$0$taps$rows$beam1$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$0$taps$rows$beam1$line$one one(
+    top$lanes$0$taps$rows$beam1$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$0$taps$rows$beam1$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$0$taps$rows$beam1$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$0$taps$rows$beam1$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$0$taps$rows$beam1$line
-module top$lanes$0$taps$rows$beam1$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$beam1$line$one
-module top$lanes$0$taps$rows$beam1$line$ptr(d,q,clock);
+endmodule // top$lanes$0$taps$rows$beam1
+module top$lanes$0$taps$rows$beam1$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1425,8 +1414,76 @@ module top$lanes$0$taps$rows$beam1$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam1$line$ptr
-module top$lanes$0$taps$rows$beam1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$taps$rows$beam1$bound
+module top$lanes$0$taps$rows$beam1$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$is_one
+module top$lanes$0$taps$rows$beam1$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$is_short
+module top$lanes$0$taps$rows$beam1$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$one
+module top$lanes$0$taps$rows$beam1$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$ptr
+module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1438,20 +1495,28 @@ module top$lanes$0$taps$rows$beam1$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem[62:0];
+    reg [31:0] mem_0_0[62:0];
+    reg [31:0] rd_0;
+    reg [31:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][31:24], 8'd0, mem[read_address[5:0]][23:16], 8'd0, mem[read_address[5:0]][15:8], 8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[31:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[31:0];
        end
     end
-endmodule // top$lanes$0$taps$rows$beam1$line$ram
-module top$lanes$0$taps$rows$beam1$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$0$taps$rows$beam1$ram
+module top$lanes$0$taps$rows$beam1$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1467,25 +1532,8 @@ module top$lanes$0$taps$rows$beam1$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam1$line$rd_flipped
-module top$lanes$0$taps$rows$beam1$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$beam1$line_last
-module top$lanes$0$taps$rows$beam1$out(d,q,clock);
+endmodule // top$lanes$0$taps$rows$beam1$rd_flipped
+module top$lanes$0$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -1501,7 +1549,7 @@ module top$lanes$0$taps$rows$beam1$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam1$out
+endmodule // top$lanes$0$taps$rows$beam1$short
 module top$lanes$0$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -1529,75 +1577,9 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff00ff00ff00ff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$0$taps$rows$ring$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$0$taps$rows$ring$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$0$taps$rows$ring$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$0$taps$rows$ring
-module top$lanes$0$taps$rows$ring$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fb0;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
@@ -1608,6 +1590,9 @@ module top$lanes$0$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -1617,13 +1602,22 @@ module top$lanes$0$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$0$taps$rows$ring$line$ram ram(
+    top$lanes$0$taps$rows$ring$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -1632,76 +1626,95 @@ module top$lanes$0$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$0$taps$rows$ring$line$ptr ptr(
+    top$lanes$0$taps$rows$ring$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$0$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$0$taps$rows$ring$line$rd_flipped rd_flipped(
+    top$lanes$0$taps$rows$ring$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$0$taps$rows$ring$line$one one(
+    top$lanes$0$taps$rows$ring$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$0$taps$rows$ring$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$0$taps$rows$ring$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$0$taps$rows$ring$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$0$taps$rows$ring$line
-module top$lanes$0$taps$rows$ring$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$ring$line$one
-module top$lanes$0$taps$rows$ring$line$ptr(d,q,clock);
+endmodule // top$lanes$0$taps$rows$ring
+module top$lanes$0$taps$rows$ring$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1717,8 +1730,76 @@ module top$lanes$0$taps$rows$ring$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$ring$line$ptr
-module top$lanes$0$taps$rows$ring$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$taps$rows$ring$bound
+module top$lanes$0$taps$rows$ring$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$is_one
+module top$lanes$0$taps$rows$ring$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$is_short
+module top$lanes$0$taps$rows$ring$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$one
+module top$lanes$0$taps$rows$ring$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$ptr
+module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1730,19 +1811,120 @@ module top$lanes$0$taps$rows$ring$line$ram(read_address,read_clock,read_data,wri
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[16304:0];
+    wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+    reg [0:0] mem_0_0[16304:0];
+    reg [0:0] mem_0_1[16304:0];
+    reg [0:0] mem_0_2[16304:0];
+    reg [0:0] mem_0_3[16304:0];
+    reg [0:0] mem_0_4[16304:0];
+    reg [0:0] mem_0_5[16304:0];
+    reg [0:0] mem_0_6[16304:0];
+    reg [0:0] mem_0_7[16304:0];
+    reg [0:0] mem_0_8[16304:0];
+    reg [0:0] mem_0_9[16304:0];
+    reg [0:0] mem_0_10[16304:0];
+    reg [0:0] mem_0_11[16304:0];
+    reg [0:0] mem_0_12[16304:0];
+    reg [0:0] mem_0_13[16304:0];
+    reg [0:0] mem_0_14[16304:0];
+    reg [0:0] mem_0_15[16304:0];
+    reg [0:0] mem_0_16[16304:0];
+    reg [0:0] mem_0_17[16304:0];
+    reg [0:0] mem_0_18[16304:0];
+    reg [0:0] mem_0_19[16304:0];
+    reg [0:0] mem_0_20[16304:0];
+    reg [0:0] mem_0_21[16304:0];
+    reg [0:0] mem_0_22[16304:0];
+    reg [0:0] mem_0_23[16304:0];
+    reg [0:0] mem_0_24[16304:0];
+    reg [0:0] mem_0_25[16304:0];
+    reg [0:0] mem_0_26[16304:0];
+    reg [0:0] mem_0_27[16304:0];
+    reg [0:0] mem_0_28[16304:0];
+    reg [0:0] mem_0_29[16304:0];
+    reg [0:0] mem_0_30[16304:0];
+    reg [0:0] mem_0_31[16304:0];
+    reg [31:0] rd_0;
+    reg [31:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][31:24], 8'd0, mem[read_address[13:0]][23:16], 8'd0, mem[read_address[13:0]][15:8], 8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       rd_0[8:8] <= mem_0_8[read_address[13:0]];
+       rd_0[9:9] <= mem_0_9[read_address[13:0]];
+       rd_0[10:10] <= mem_0_10[read_address[13:0]];
+       rd_0[11:11] <= mem_0_11[read_address[13:0]];
+       rd_0[12:12] <= mem_0_12[read_address[13:0]];
+       rd_0[13:13] <= mem_0_13[read_address[13:0]];
+       rd_0[14:14] <= mem_0_14[read_address[13:0]];
+       rd_0[15:15] <= mem_0_15[read_address[13:0]];
+       rd_0[16:16] <= mem_0_16[read_address[13:0]];
+       rd_0[17:17] <= mem_0_17[read_address[13:0]];
+       rd_0[18:18] <= mem_0_18[read_address[13:0]];
+       rd_0[19:19] <= mem_0_19[read_address[13:0]];
+       rd_0[20:20] <= mem_0_20[read_address[13:0]];
+       rd_0[21:21] <= mem_0_21[read_address[13:0]];
+       rd_0[22:22] <= mem_0_22[read_address[13:0]];
+       rd_0[23:23] <= mem_0_23[read_address[13:0]];
+       rd_0[24:24] <= mem_0_24[read_address[13:0]];
+       rd_0[25:25] <= mem_0_25[read_address[13:0]];
+       rd_0[26:26] <= mem_0_26[read_address[13:0]];
+       rd_0[27:27] <= mem_0_27[read_address[13:0]];
+       rd_0[28:28] <= mem_0_28[read_address[13:0]];
+       rd_0[29:29] <= mem_0_29[read_address[13:0]];
+       rd_0[30:30] <= mem_0_30[read_address[13:0]];
+       rd_0[31:31] <= mem_0_31[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
+          mem_0_8[write_address[13:0]] <= stored_word[8:8];
+          mem_0_9[write_address[13:0]] <= stored_word[9:9];
+          mem_0_10[write_address[13:0]] <= stored_word[10:10];
+          mem_0_11[write_address[13:0]] <= stored_word[11:11];
+          mem_0_12[write_address[13:0]] <= stored_word[12:12];
+          mem_0_13[write_address[13:0]] <= stored_word[13:13];
+          mem_0_14[write_address[13:0]] <= stored_word[14:14];
+          mem_0_15[write_address[13:0]] <= stored_word[15:15];
+          mem_0_16[write_address[13:0]] <= stored_word[16:16];
+          mem_0_17[write_address[13:0]] <= stored_word[17:17];
+          mem_0_18[write_address[13:0]] <= stored_word[18:18];
+          mem_0_19[write_address[13:0]] <= stored_word[19:19];
+          mem_0_20[write_address[13:0]] <= stored_word[20:20];
+          mem_0_21[write_address[13:0]] <= stored_word[21:21];
+          mem_0_22[write_address[13:0]] <= stored_word[22:22];
+          mem_0_23[write_address[13:0]] <= stored_word[23:23];
+          mem_0_24[write_address[13:0]] <= stored_word[24:24];
+          mem_0_25[write_address[13:0]] <= stored_word[25:25];
+          mem_0_26[write_address[13:0]] <= stored_word[26:26];
+          mem_0_27[write_address[13:0]] <= stored_word[27:27];
+          mem_0_28[write_address[13:0]] <= stored_word[28:28];
+          mem_0_29[write_address[13:0]] <= stored_word[29:29];
+          mem_0_30[write_address[13:0]] <= stored_word[30:30];
+          mem_0_31[write_address[13:0]] <= stored_word[31:31];
        end
     end
-endmodule // top$lanes$0$taps$rows$ring$line$ram
-module top$lanes$0$taps$rows$ring$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$0$taps$rows$ring$ram
+module top$lanes$0$taps$rows$ring$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1758,25 +1940,8 @@ module top$lanes$0$taps$rows$ring$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$ring$line$rd_flipped
-module top$lanes$0$taps$rows$ring$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$ring$line_last
-module top$lanes$0$taps$rows$ring$out(d,q,clock);
+endmodule // top$lanes$0$taps$rows$ring$rd_flipped
+module top$lanes$0$taps$rows$ring$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -1792,7 +1957,7 @@ module top$lanes$0$taps$rows$ring$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$ring$out
+endmodule // top$lanes$0$taps$rows$ring$short
 module top$lanes$0$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -3879,75 +4044,9 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff00ff00ff00ff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$1$taps$rows$beam0$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$1$taps$rows$beam0$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$1$taps$rows$beam0$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$1$taps$rows$beam0
-module top$lanes$1$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
@@ -3958,6 +4057,9 @@ module top$lanes$1$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -3967,13 +4069,22 @@ module top$lanes$1$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$1$taps$rows$beam0$line$ram ram(
+    top$lanes$1$taps$rows$beam0$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -3982,76 +4093,95 @@ module top$lanes$1$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$1$taps$rows$beam0$line$ptr ptr(
+    top$lanes$1$taps$rows$beam0$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$1$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$1$taps$rows$beam0$line$rd_flipped rd_flipped(
+    top$lanes$1$taps$rows$beam0$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$1$taps$rows$beam0$line$one one(
+    top$lanes$1$taps$rows$beam0$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$1$taps$rows$beam0$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$1$taps$rows$beam0$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$1$taps$rows$beam0$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$1$taps$rows$beam0$line
-module top$lanes$1$taps$rows$beam0$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$beam0$line$one
-module top$lanes$1$taps$rows$beam0$line$ptr(d,q,clock);
+endmodule // top$lanes$1$taps$rows$beam0
+module top$lanes$1$taps$rows$beam0$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4067,8 +4197,76 @@ module top$lanes$1$taps$rows$beam0$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam0$line$ptr
-module top$lanes$1$taps$rows$beam0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$taps$rows$beam0$bound
+module top$lanes$1$taps$rows$beam0$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$is_one
+module top$lanes$1$taps$rows$beam0$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$is_short
+module top$lanes$1$taps$rows$beam0$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$one
+module top$lanes$1$taps$rows$beam0$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$ptr
+module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -4080,20 +4278,28 @@ module top$lanes$1$taps$rows$beam0$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem[62:0];
+    reg [31:0] mem_0_0[62:0];
+    reg [31:0] rd_0;
+    reg [31:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][31:24], 8'd0, mem[read_address[5:0]][23:16], 8'd0, mem[read_address[5:0]][15:8], 8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[31:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[31:0];
        end
     end
-endmodule // top$lanes$1$taps$rows$beam0$line$ram
-module top$lanes$1$taps$rows$beam0$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$1$taps$rows$beam0$ram
+module top$lanes$1$taps$rows$beam0$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4109,25 +4315,8 @@ module top$lanes$1$taps$rows$beam0$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam0$line$rd_flipped
-module top$lanes$1$taps$rows$beam0$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$beam0$line_last
-module top$lanes$1$taps$rows$beam0$out(d,q,clock);
+endmodule // top$lanes$1$taps$rows$beam0$rd_flipped
+module top$lanes$1$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -4143,7 +4332,7 @@ module top$lanes$1$taps$rows$beam0$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam0$out
+endmodule // top$lanes$1$taps$rows$beam0$short
 module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -4154,75 +4343,9 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff00ff00ff00ff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$1$taps$rows$beam1$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$1$taps$rows$beam1$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$1$taps$rows$beam1$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$1$taps$rows$beam1
-module top$lanes$1$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
@@ -4233,6 +4356,9 @@ module top$lanes$1$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -4242,13 +4368,22 @@ module top$lanes$1$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$1$taps$rows$beam1$line$ram ram(
+    top$lanes$1$taps$rows$beam1$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -4257,76 +4392,95 @@ module top$lanes$1$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$1$taps$rows$beam1$line$ptr ptr(
+    top$lanes$1$taps$rows$beam1$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$1$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$1$taps$rows$beam1$line$rd_flipped rd_flipped(
+    top$lanes$1$taps$rows$beam1$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$1$taps$rows$beam1$line$one one(
+    top$lanes$1$taps$rows$beam1$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$1$taps$rows$beam1$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$1$taps$rows$beam1$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$1$taps$rows$beam1$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$1$taps$rows$beam1$line
-module top$lanes$1$taps$rows$beam1$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$beam1$line$one
-module top$lanes$1$taps$rows$beam1$line$ptr(d,q,clock);
+endmodule // top$lanes$1$taps$rows$beam1
+module top$lanes$1$taps$rows$beam1$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4342,8 +4496,76 @@ module top$lanes$1$taps$rows$beam1$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam1$line$ptr
-module top$lanes$1$taps$rows$beam1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$taps$rows$beam1$bound
+module top$lanes$1$taps$rows$beam1$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$is_one
+module top$lanes$1$taps$rows$beam1$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$is_short
+module top$lanes$1$taps$rows$beam1$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$one
+module top$lanes$1$taps$rows$beam1$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$ptr
+module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -4355,20 +4577,28 @@ module top$lanes$1$taps$rows$beam1$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem[62:0];
+    reg [31:0] mem_0_0[62:0];
+    reg [31:0] rd_0;
+    reg [31:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][31:24], 8'd0, mem[read_address[5:0]][23:16], 8'd0, mem[read_address[5:0]][15:8], 8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[31:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[31:0];
        end
     end
-endmodule // top$lanes$1$taps$rows$beam1$line$ram
-module top$lanes$1$taps$rows$beam1$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$1$taps$rows$beam1$ram
+module top$lanes$1$taps$rows$beam1$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4384,25 +4614,8 @@ module top$lanes$1$taps$rows$beam1$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam1$line$rd_flipped
-module top$lanes$1$taps$rows$beam1$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$beam1$line_last
-module top$lanes$1$taps$rows$beam1$out(d,q,clock);
+endmodule // top$lanes$1$taps$rows$beam1$rd_flipped
+module top$lanes$1$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -4418,7 +4631,7 @@ module top$lanes$1$taps$rows$beam1$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam1$out
+endmodule // top$lanes$1$taps$rows$beam1$short
 module top$lanes$1$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -4446,75 +4659,9 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff00ff00ff00ff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$1$taps$rows$ring$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$1$taps$rows$ring$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$1$taps$rows$ring$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$1$taps$rows$ring
-module top$lanes$1$taps$rows$ring$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fb0;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
@@ -4525,6 +4672,9 @@ module top$lanes$1$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -4534,13 +4684,22 @@ module top$lanes$1$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$1$taps$rows$ring$line$ram ram(
+    top$lanes$1$taps$rows$ring$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -4549,76 +4708,95 @@ module top$lanes$1$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$1$taps$rows$ring$line$ptr ptr(
+    top$lanes$1$taps$rows$ring$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$1$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$1$taps$rows$ring$line$rd_flipped rd_flipped(
+    top$lanes$1$taps$rows$ring$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$1$taps$rows$ring$line$one one(
+    top$lanes$1$taps$rows$ring$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$1$taps$rows$ring$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$1$taps$rows$ring$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$1$taps$rows$ring$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$1$taps$rows$ring$line
-module top$lanes$1$taps$rows$ring$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$ring$line$one
-module top$lanes$1$taps$rows$ring$line$ptr(d,q,clock);
+endmodule // top$lanes$1$taps$rows$ring
+module top$lanes$1$taps$rows$ring$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4634,8 +4812,76 @@ module top$lanes$1$taps$rows$ring$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$ring$line$ptr
-module top$lanes$1$taps$rows$ring$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$taps$rows$ring$bound
+module top$lanes$1$taps$rows$ring$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$is_one
+module top$lanes$1$taps$rows$ring$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$is_short
+module top$lanes$1$taps$rows$ring$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$one
+module top$lanes$1$taps$rows$ring$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$ptr
+module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -4647,19 +4893,120 @@ module top$lanes$1$taps$rows$ring$line$ram(read_address,read_clock,read_data,wri
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[16304:0];
+    wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+    reg [0:0] mem_0_0[16304:0];
+    reg [0:0] mem_0_1[16304:0];
+    reg [0:0] mem_0_2[16304:0];
+    reg [0:0] mem_0_3[16304:0];
+    reg [0:0] mem_0_4[16304:0];
+    reg [0:0] mem_0_5[16304:0];
+    reg [0:0] mem_0_6[16304:0];
+    reg [0:0] mem_0_7[16304:0];
+    reg [0:0] mem_0_8[16304:0];
+    reg [0:0] mem_0_9[16304:0];
+    reg [0:0] mem_0_10[16304:0];
+    reg [0:0] mem_0_11[16304:0];
+    reg [0:0] mem_0_12[16304:0];
+    reg [0:0] mem_0_13[16304:0];
+    reg [0:0] mem_0_14[16304:0];
+    reg [0:0] mem_0_15[16304:0];
+    reg [0:0] mem_0_16[16304:0];
+    reg [0:0] mem_0_17[16304:0];
+    reg [0:0] mem_0_18[16304:0];
+    reg [0:0] mem_0_19[16304:0];
+    reg [0:0] mem_0_20[16304:0];
+    reg [0:0] mem_0_21[16304:0];
+    reg [0:0] mem_0_22[16304:0];
+    reg [0:0] mem_0_23[16304:0];
+    reg [0:0] mem_0_24[16304:0];
+    reg [0:0] mem_0_25[16304:0];
+    reg [0:0] mem_0_26[16304:0];
+    reg [0:0] mem_0_27[16304:0];
+    reg [0:0] mem_0_28[16304:0];
+    reg [0:0] mem_0_29[16304:0];
+    reg [0:0] mem_0_30[16304:0];
+    reg [0:0] mem_0_31[16304:0];
+    reg [31:0] rd_0;
+    reg [31:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][31:24], 8'd0, mem[read_address[13:0]][23:16], 8'd0, mem[read_address[13:0]][15:8], 8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       rd_0[8:8] <= mem_0_8[read_address[13:0]];
+       rd_0[9:9] <= mem_0_9[read_address[13:0]];
+       rd_0[10:10] <= mem_0_10[read_address[13:0]];
+       rd_0[11:11] <= mem_0_11[read_address[13:0]];
+       rd_0[12:12] <= mem_0_12[read_address[13:0]];
+       rd_0[13:13] <= mem_0_13[read_address[13:0]];
+       rd_0[14:14] <= mem_0_14[read_address[13:0]];
+       rd_0[15:15] <= mem_0_15[read_address[13:0]];
+       rd_0[16:16] <= mem_0_16[read_address[13:0]];
+       rd_0[17:17] <= mem_0_17[read_address[13:0]];
+       rd_0[18:18] <= mem_0_18[read_address[13:0]];
+       rd_0[19:19] <= mem_0_19[read_address[13:0]];
+       rd_0[20:20] <= mem_0_20[read_address[13:0]];
+       rd_0[21:21] <= mem_0_21[read_address[13:0]];
+       rd_0[22:22] <= mem_0_22[read_address[13:0]];
+       rd_0[23:23] <= mem_0_23[read_address[13:0]];
+       rd_0[24:24] <= mem_0_24[read_address[13:0]];
+       rd_0[25:25] <= mem_0_25[read_address[13:0]];
+       rd_0[26:26] <= mem_0_26[read_address[13:0]];
+       rd_0[27:27] <= mem_0_27[read_address[13:0]];
+       rd_0[28:28] <= mem_0_28[read_address[13:0]];
+       rd_0[29:29] <= mem_0_29[read_address[13:0]];
+       rd_0[30:30] <= mem_0_30[read_address[13:0]];
+       rd_0[31:31] <= mem_0_31[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
+          mem_0_8[write_address[13:0]] <= stored_word[8:8];
+          mem_0_9[write_address[13:0]] <= stored_word[9:9];
+          mem_0_10[write_address[13:0]] <= stored_word[10:10];
+          mem_0_11[write_address[13:0]] <= stored_word[11:11];
+          mem_0_12[write_address[13:0]] <= stored_word[12:12];
+          mem_0_13[write_address[13:0]] <= stored_word[13:13];
+          mem_0_14[write_address[13:0]] <= stored_word[14:14];
+          mem_0_15[write_address[13:0]] <= stored_word[15:15];
+          mem_0_16[write_address[13:0]] <= stored_word[16:16];
+          mem_0_17[write_address[13:0]] <= stored_word[17:17];
+          mem_0_18[write_address[13:0]] <= stored_word[18:18];
+          mem_0_19[write_address[13:0]] <= stored_word[19:19];
+          mem_0_20[write_address[13:0]] <= stored_word[20:20];
+          mem_0_21[write_address[13:0]] <= stored_word[21:21];
+          mem_0_22[write_address[13:0]] <= stored_word[22:22];
+          mem_0_23[write_address[13:0]] <= stored_word[23:23];
+          mem_0_24[write_address[13:0]] <= stored_word[24:24];
+          mem_0_25[write_address[13:0]] <= stored_word[25:25];
+          mem_0_26[write_address[13:0]] <= stored_word[26:26];
+          mem_0_27[write_address[13:0]] <= stored_word[27:27];
+          mem_0_28[write_address[13:0]] <= stored_word[28:28];
+          mem_0_29[write_address[13:0]] <= stored_word[29:29];
+          mem_0_30[write_address[13:0]] <= stored_word[30:30];
+          mem_0_31[write_address[13:0]] <= stored_word[31:31];
        end
     end
-endmodule // top$lanes$1$taps$rows$ring$line$ram
-module top$lanes$1$taps$rows$ring$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$1$taps$rows$ring$ram
+module top$lanes$1$taps$rows$ring$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4675,25 +5022,8 @@ module top$lanes$1$taps$rows$ring$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$ring$line$rd_flipped
-module top$lanes$1$taps$rows$ring$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$ring$line_last
-module top$lanes$1$taps$rows$ring$out(d,q,clock);
+endmodule // top$lanes$1$taps$rows$ring$rd_flipped
+module top$lanes$1$taps$rows$ring$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -4709,7 +5039,7 @@ module top$lanes$1$taps$rows$ring$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$ring$out
+endmodule // top$lanes$1$taps$rows$ring$short
 module top$lanes$1$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -6796,75 +7126,9 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff00ff00ff00ff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$2$taps$rows$beam0$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$2$taps$rows$beam0$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$2$taps$rows$beam0$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$2$taps$rows$beam0
-module top$lanes$2$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
@@ -6875,6 +7139,9 @@ module top$lanes$2$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -6884,13 +7151,22 @@ module top$lanes$2$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$2$taps$rows$beam0$line$ram ram(
+    top$lanes$2$taps$rows$beam0$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -6899,76 +7175,95 @@ module top$lanes$2$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$2$taps$rows$beam0$line$ptr ptr(
+    top$lanes$2$taps$rows$beam0$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$2$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$2$taps$rows$beam0$line$rd_flipped rd_flipped(
+    top$lanes$2$taps$rows$beam0$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$2$taps$rows$beam0$line$one one(
+    top$lanes$2$taps$rows$beam0$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$2$taps$rows$beam0$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$2$taps$rows$beam0$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$2$taps$rows$beam0$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$2$taps$rows$beam0$line
-module top$lanes$2$taps$rows$beam0$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$taps$rows$beam0$line$one
-module top$lanes$2$taps$rows$beam0$line$ptr(d,q,clock);
+endmodule // top$lanes$2$taps$rows$beam0
+module top$lanes$2$taps$rows$beam0$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6984,8 +7279,76 @@ module top$lanes$2$taps$rows$beam0$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam0$line$ptr
-module top$lanes$2$taps$rows$beam0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$taps$rows$beam0$bound
+module top$lanes$2$taps$rows$beam0$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam0$is_one
+module top$lanes$2$taps$rows$beam0$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam0$is_short
+module top$lanes$2$taps$rows$beam0$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam0$one
+module top$lanes$2$taps$rows$beam0$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam0$ptr
+module top$lanes$2$taps$rows$beam0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -6997,20 +7360,28 @@ module top$lanes$2$taps$rows$beam0$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem[62:0];
+    reg [31:0] mem_0_0[62:0];
+    reg [31:0] rd_0;
+    reg [31:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][31:24], 8'd0, mem[read_address[5:0]][23:16], 8'd0, mem[read_address[5:0]][15:8], 8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[31:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[31:0];
        end
     end
-endmodule // top$lanes$2$taps$rows$beam0$line$ram
-module top$lanes$2$taps$rows$beam0$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$2$taps$rows$beam0$ram
+module top$lanes$2$taps$rows$beam0$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7026,25 +7397,8 @@ module top$lanes$2$taps$rows$beam0$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam0$line$rd_flipped
-module top$lanes$2$taps$rows$beam0$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$taps$rows$beam0$line_last
-module top$lanes$2$taps$rows$beam0$out(d,q,clock);
+endmodule // top$lanes$2$taps$rows$beam0$rd_flipped
+module top$lanes$2$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -7060,7 +7414,7 @@ module top$lanes$2$taps$rows$beam0$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam0$out
+endmodule // top$lanes$2$taps$rows$beam0$short
 module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7071,75 +7425,9 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff00ff00ff00ff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$2$taps$rows$beam1$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$2$taps$rows$beam1$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$2$taps$rows$beam1$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$2$taps$rows$beam1
-module top$lanes$2$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
@@ -7150,6 +7438,9 @@ module top$lanes$2$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -7159,13 +7450,22 @@ module top$lanes$2$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$2$taps$rows$beam1$line$ram ram(
+    top$lanes$2$taps$rows$beam1$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -7174,76 +7474,95 @@ module top$lanes$2$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$2$taps$rows$beam1$line$ptr ptr(
+    top$lanes$2$taps$rows$beam1$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$2$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$2$taps$rows$beam1$line$rd_flipped rd_flipped(
+    top$lanes$2$taps$rows$beam1$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$2$taps$rows$beam1$line$one one(
+    top$lanes$2$taps$rows$beam1$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$2$taps$rows$beam1$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$2$taps$rows$beam1$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$2$taps$rows$beam1$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$2$taps$rows$beam1$line
-module top$lanes$2$taps$rows$beam1$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$taps$rows$beam1$line$one
-module top$lanes$2$taps$rows$beam1$line$ptr(d,q,clock);
+endmodule // top$lanes$2$taps$rows$beam1
+module top$lanes$2$taps$rows$beam1$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7259,8 +7578,76 @@ module top$lanes$2$taps$rows$beam1$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam1$line$ptr
-module top$lanes$2$taps$rows$beam1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$taps$rows$beam1$bound
+module top$lanes$2$taps$rows$beam1$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam1$is_one
+module top$lanes$2$taps$rows$beam1$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam1$is_short
+module top$lanes$2$taps$rows$beam1$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam1$one
+module top$lanes$2$taps$rows$beam1$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam1$ptr
+module top$lanes$2$taps$rows$beam1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -7272,20 +7659,28 @@ module top$lanes$2$taps$rows$beam1$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem[62:0];
+    reg [31:0] mem_0_0[62:0];
+    reg [31:0] rd_0;
+    reg [31:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][31:24], 8'd0, mem[read_address[5:0]][23:16], 8'd0, mem[read_address[5:0]][15:8], 8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[31:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[31:0];
        end
     end
-endmodule // top$lanes$2$taps$rows$beam1$line$ram
-module top$lanes$2$taps$rows$beam1$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$2$taps$rows$beam1$ram
+module top$lanes$2$taps$rows$beam1$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7301,25 +7696,8 @@ module top$lanes$2$taps$rows$beam1$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam1$line$rd_flipped
-module top$lanes$2$taps$rows$beam1$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$taps$rows$beam1$line_last
-module top$lanes$2$taps$rows$beam1$out(d,q,clock);
+endmodule // top$lanes$2$taps$rows$beam1$rd_flipped
+module top$lanes$2$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -7335,7 +7713,7 @@ module top$lanes$2$taps$rows$beam1$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam1$out
+endmodule // top$lanes$2$taps$rows$beam1$short
 module top$lanes$2$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -7363,75 +7741,9 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff00ff00ff00ff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$2$taps$rows$ring$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$2$taps$rows$ring$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$2$taps$rows$ring$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$2$taps$rows$ring
-module top$lanes$2$taps$rows$ring$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fb0;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
@@ -7442,6 +7754,9 @@ module top$lanes$2$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -7451,13 +7766,22 @@ module top$lanes$2$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$2$taps$rows$ring$line$ram ram(
+    top$lanes$2$taps$rows$ring$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -7466,76 +7790,95 @@ module top$lanes$2$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$2$taps$rows$ring$line$ptr ptr(
+    top$lanes$2$taps$rows$ring$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$2$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$2$taps$rows$ring$line$rd_flipped rd_flipped(
+    top$lanes$2$taps$rows$ring$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$2$taps$rows$ring$line$one one(
+    top$lanes$2$taps$rows$ring$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$2$taps$rows$ring$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$2$taps$rows$ring$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$2$taps$rows$ring$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$2$taps$rows$ring$line
-module top$lanes$2$taps$rows$ring$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$taps$rows$ring$line$one
-module top$lanes$2$taps$rows$ring$line$ptr(d,q,clock);
+endmodule // top$lanes$2$taps$rows$ring
+module top$lanes$2$taps$rows$ring$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7551,8 +7894,76 @@ module top$lanes$2$taps$rows$ring$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$ring$line$ptr
-module top$lanes$2$taps$rows$ring$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$taps$rows$ring$bound
+module top$lanes$2$taps$rows$ring$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$ring$is_one
+module top$lanes$2$taps$rows$ring$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$ring$is_short
+module top$lanes$2$taps$rows$ring$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$ring$one
+module top$lanes$2$taps$rows$ring$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$ring$ptr
+module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -7564,19 +7975,120 @@ module top$lanes$2$taps$rows$ring$line$ram(read_address,read_clock,read_data,wri
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[16304:0];
+    wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+    reg [0:0] mem_0_0[16304:0];
+    reg [0:0] mem_0_1[16304:0];
+    reg [0:0] mem_0_2[16304:0];
+    reg [0:0] mem_0_3[16304:0];
+    reg [0:0] mem_0_4[16304:0];
+    reg [0:0] mem_0_5[16304:0];
+    reg [0:0] mem_0_6[16304:0];
+    reg [0:0] mem_0_7[16304:0];
+    reg [0:0] mem_0_8[16304:0];
+    reg [0:0] mem_0_9[16304:0];
+    reg [0:0] mem_0_10[16304:0];
+    reg [0:0] mem_0_11[16304:0];
+    reg [0:0] mem_0_12[16304:0];
+    reg [0:0] mem_0_13[16304:0];
+    reg [0:0] mem_0_14[16304:0];
+    reg [0:0] mem_0_15[16304:0];
+    reg [0:0] mem_0_16[16304:0];
+    reg [0:0] mem_0_17[16304:0];
+    reg [0:0] mem_0_18[16304:0];
+    reg [0:0] mem_0_19[16304:0];
+    reg [0:0] mem_0_20[16304:0];
+    reg [0:0] mem_0_21[16304:0];
+    reg [0:0] mem_0_22[16304:0];
+    reg [0:0] mem_0_23[16304:0];
+    reg [0:0] mem_0_24[16304:0];
+    reg [0:0] mem_0_25[16304:0];
+    reg [0:0] mem_0_26[16304:0];
+    reg [0:0] mem_0_27[16304:0];
+    reg [0:0] mem_0_28[16304:0];
+    reg [0:0] mem_0_29[16304:0];
+    reg [0:0] mem_0_30[16304:0];
+    reg [0:0] mem_0_31[16304:0];
+    reg [31:0] rd_0;
+    reg [31:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][31:24], 8'd0, mem[read_address[13:0]][23:16], 8'd0, mem[read_address[13:0]][15:8], 8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       rd_0[8:8] <= mem_0_8[read_address[13:0]];
+       rd_0[9:9] <= mem_0_9[read_address[13:0]];
+       rd_0[10:10] <= mem_0_10[read_address[13:0]];
+       rd_0[11:11] <= mem_0_11[read_address[13:0]];
+       rd_0[12:12] <= mem_0_12[read_address[13:0]];
+       rd_0[13:13] <= mem_0_13[read_address[13:0]];
+       rd_0[14:14] <= mem_0_14[read_address[13:0]];
+       rd_0[15:15] <= mem_0_15[read_address[13:0]];
+       rd_0[16:16] <= mem_0_16[read_address[13:0]];
+       rd_0[17:17] <= mem_0_17[read_address[13:0]];
+       rd_0[18:18] <= mem_0_18[read_address[13:0]];
+       rd_0[19:19] <= mem_0_19[read_address[13:0]];
+       rd_0[20:20] <= mem_0_20[read_address[13:0]];
+       rd_0[21:21] <= mem_0_21[read_address[13:0]];
+       rd_0[22:22] <= mem_0_22[read_address[13:0]];
+       rd_0[23:23] <= mem_0_23[read_address[13:0]];
+       rd_0[24:24] <= mem_0_24[read_address[13:0]];
+       rd_0[25:25] <= mem_0_25[read_address[13:0]];
+       rd_0[26:26] <= mem_0_26[read_address[13:0]];
+       rd_0[27:27] <= mem_0_27[read_address[13:0]];
+       rd_0[28:28] <= mem_0_28[read_address[13:0]];
+       rd_0[29:29] <= mem_0_29[read_address[13:0]];
+       rd_0[30:30] <= mem_0_30[read_address[13:0]];
+       rd_0[31:31] <= mem_0_31[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
+          mem_0_8[write_address[13:0]] <= stored_word[8:8];
+          mem_0_9[write_address[13:0]] <= stored_word[9:9];
+          mem_0_10[write_address[13:0]] <= stored_word[10:10];
+          mem_0_11[write_address[13:0]] <= stored_word[11:11];
+          mem_0_12[write_address[13:0]] <= stored_word[12:12];
+          mem_0_13[write_address[13:0]] <= stored_word[13:13];
+          mem_0_14[write_address[13:0]] <= stored_word[14:14];
+          mem_0_15[write_address[13:0]] <= stored_word[15:15];
+          mem_0_16[write_address[13:0]] <= stored_word[16:16];
+          mem_0_17[write_address[13:0]] <= stored_word[17:17];
+          mem_0_18[write_address[13:0]] <= stored_word[18:18];
+          mem_0_19[write_address[13:0]] <= stored_word[19:19];
+          mem_0_20[write_address[13:0]] <= stored_word[20:20];
+          mem_0_21[write_address[13:0]] <= stored_word[21:21];
+          mem_0_22[write_address[13:0]] <= stored_word[22:22];
+          mem_0_23[write_address[13:0]] <= stored_word[23:23];
+          mem_0_24[write_address[13:0]] <= stored_word[24:24];
+          mem_0_25[write_address[13:0]] <= stored_word[25:25];
+          mem_0_26[write_address[13:0]] <= stored_word[26:26];
+          mem_0_27[write_address[13:0]] <= stored_word[27:27];
+          mem_0_28[write_address[13:0]] <= stored_word[28:28];
+          mem_0_29[write_address[13:0]] <= stored_word[29:29];
+          mem_0_30[write_address[13:0]] <= stored_word[30:30];
+          mem_0_31[write_address[13:0]] <= stored_word[31:31];
        end
     end
-endmodule // top$lanes$2$taps$rows$ring$line$ram
-module top$lanes$2$taps$rows$ring$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$2$taps$rows$ring$ram
+module top$lanes$2$taps$rows$ring$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7592,25 +8104,8 @@ module top$lanes$2$taps$rows$ring$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$ring$line$rd_flipped
-module top$lanes$2$taps$rows$ring$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$taps$rows$ring$line_last
-module top$lanes$2$taps$rows$ring$out(d,q,clock);
+endmodule // top$lanes$2$taps$rows$ring$rd_flipped
+module top$lanes$2$taps$rows$ring$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -7626,7 +8121,7 @@ module top$lanes$2$taps$rows$ring$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$ring$out
+endmodule // top$lanes$2$taps$rows$ring$short
 module top$lanes$2$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -9713,75 +10208,9 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff00ff00ff00ff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$3$taps$rows$beam0$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$3$taps$rows$beam0$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$3$taps$rows$beam0$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$3$taps$rows$beam0
-module top$lanes$3$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
@@ -9792,6 +10221,9 @@ module top$lanes$3$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -9801,13 +10233,22 @@ module top$lanes$3$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$3$taps$rows$beam0$line$ram ram(
+    top$lanes$3$taps$rows$beam0$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -9816,76 +10257,95 @@ module top$lanes$3$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$3$taps$rows$beam0$line$ptr ptr(
+    top$lanes$3$taps$rows$beam0$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$3$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$3$taps$rows$beam0$line$rd_flipped rd_flipped(
+    top$lanes$3$taps$rows$beam0$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$3$taps$rows$beam0$line$one one(
+    top$lanes$3$taps$rows$beam0$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$3$taps$rows$beam0$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$3$taps$rows$beam0$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$3$taps$rows$beam0$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$3$taps$rows$beam0$line
-module top$lanes$3$taps$rows$beam0$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$taps$rows$beam0$line$one
-module top$lanes$3$taps$rows$beam0$line$ptr(d,q,clock);
+endmodule // top$lanes$3$taps$rows$beam0
+module top$lanes$3$taps$rows$beam0$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -9901,8 +10361,76 @@ module top$lanes$3$taps$rows$beam0$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam0$line$ptr
-module top$lanes$3$taps$rows$beam0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$taps$rows$beam0$bound
+module top$lanes$3$taps$rows$beam0$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam0$is_one
+module top$lanes$3$taps$rows$beam0$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam0$is_short
+module top$lanes$3$taps$rows$beam0$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam0$one
+module top$lanes$3$taps$rows$beam0$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam0$ptr
+module top$lanes$3$taps$rows$beam0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -9914,20 +10442,28 @@ module top$lanes$3$taps$rows$beam0$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem[62:0];
+    reg [31:0] mem_0_0[62:0];
+    reg [31:0] rd_0;
+    reg [31:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][31:24], 8'd0, mem[read_address[5:0]][23:16], 8'd0, mem[read_address[5:0]][15:8], 8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[31:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[31:0];
        end
     end
-endmodule // top$lanes$3$taps$rows$beam0$line$ram
-module top$lanes$3$taps$rows$beam0$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$3$taps$rows$beam0$ram
+module top$lanes$3$taps$rows$beam0$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -9943,25 +10479,8 @@ module top$lanes$3$taps$rows$beam0$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam0$line$rd_flipped
-module top$lanes$3$taps$rows$beam0$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$taps$rows$beam0$line_last
-module top$lanes$3$taps$rows$beam0$out(d,q,clock);
+endmodule // top$lanes$3$taps$rows$beam0$rd_flipped
+module top$lanes$3$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -9977,7 +10496,7 @@ module top$lanes$3$taps$rows$beam0$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam0$out
+endmodule // top$lanes$3$taps$rows$beam0$short
 module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -9988,75 +10507,9 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff00ff00ff00ff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$3$taps$rows$beam1$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$3$taps$rows$beam1$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$3$taps$rows$beam1$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$3$taps$rows$beam1
-module top$lanes$3$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
@@ -10067,6 +10520,9 @@ module top$lanes$3$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -10076,13 +10532,22 @@ module top$lanes$3$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$3$taps$rows$beam1$line$ram ram(
+    top$lanes$3$taps$rows$beam1$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -10091,76 +10556,95 @@ module top$lanes$3$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$3$taps$rows$beam1$line$ptr ptr(
+    top$lanes$3$taps$rows$beam1$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$3$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$3$taps$rows$beam1$line$rd_flipped rd_flipped(
+    top$lanes$3$taps$rows$beam1$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$3$taps$rows$beam1$line$one one(
+    top$lanes$3$taps$rows$beam1$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$3$taps$rows$beam1$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$3$taps$rows$beam1$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$3$taps$rows$beam1$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$3$taps$rows$beam1$line
-module top$lanes$3$taps$rows$beam1$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$taps$rows$beam1$line$one
-module top$lanes$3$taps$rows$beam1$line$ptr(d,q,clock);
+endmodule // top$lanes$3$taps$rows$beam1
+module top$lanes$3$taps$rows$beam1$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10176,8 +10660,76 @@ module top$lanes$3$taps$rows$beam1$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam1$line$ptr
-module top$lanes$3$taps$rows$beam1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$taps$rows$beam1$bound
+module top$lanes$3$taps$rows$beam1$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam1$is_one
+module top$lanes$3$taps$rows$beam1$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam1$is_short
+module top$lanes$3$taps$rows$beam1$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam1$one
+module top$lanes$3$taps$rows$beam1$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam1$ptr
+module top$lanes$3$taps$rows$beam1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -10189,20 +10741,28 @@ module top$lanes$3$taps$rows$beam1$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem[62:0];
+    reg [31:0] mem_0_0[62:0];
+    reg [31:0] rd_0;
+    reg [31:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[5:0]][31:24], 8'd0, mem[read_address[5:0]][23:16], 8'd0, mem[read_address[5:0]][15:8], 8'd0, mem[read_address[5:0]][7:0]};
+       rd_0[31:0] <= mem_0_0[read_address[5:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[5:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem_0_0[write_address[5:0]] <= stored_word[31:0];
        end
     end
-endmodule // top$lanes$3$taps$rows$beam1$line$ram
-module top$lanes$3$taps$rows$beam1$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$3$taps$rows$beam1$ram
+module top$lanes$3$taps$rows$beam1$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10218,25 +10778,8 @@ module top$lanes$3$taps$rows$beam1$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam1$line$rd_flipped
-module top$lanes$3$taps$rows$beam1$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$taps$rows$beam1$line_last
-module top$lanes$3$taps$rows$beam1$out(d,q,clock);
+endmodule // top$lanes$3$taps$rows$beam1$rd_flipped
+module top$lanes$3$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -10252,7 +10795,7 @@ module top$lanes$3$taps$rows$beam1$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam1$out
+endmodule // top$lanes$3$taps$rows$beam1$short
 module top$lanes$3$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -10280,75 +10823,9 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff00ff00ff00ff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$3$taps$rows$ring$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$3$taps$rows$ring$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$3$taps$rows$ring$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$3$taps$rows$ring
-module top$lanes$3$taps$rows$ring$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fb0;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
     // Stub signals
@@ -10359,6 +10836,9 @@ module top$lanes$3$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -10368,13 +10848,22 @@ module top$lanes$3$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$3$taps$rows$ring$line$ram ram(
+    top$lanes$3$taps$rows$ring$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -10383,76 +10872,95 @@ module top$lanes$3$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$3$taps$rows$ring$line$ptr ptr(
+    top$lanes$3$taps$rows$ring$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$3$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$3$taps$rows$ring$line$rd_flipped rd_flipped(
+    top$lanes$3$taps$rows$ring$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$3$taps$rows$ring$line$one one(
+    top$lanes$3$taps$rows$ring$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$3$taps$rows$ring$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$3$taps$rows$ring$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$3$taps$rows$ring$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$3$taps$rows$ring$line
-module top$lanes$3$taps$rows$ring$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$taps$rows$ring$line$one
-module top$lanes$3$taps$rows$ring$line$ptr(d,q,clock);
+endmodule // top$lanes$3$taps$rows$ring
+module top$lanes$3$taps$rows$ring$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10468,8 +10976,76 @@ module top$lanes$3$taps$rows$ring$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$ring$line$ptr
-module top$lanes$3$taps$rows$ring$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$taps$rows$ring$bound
+module top$lanes$3$taps$rows$ring$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$ring$is_one
+module top$lanes$3$taps$rows$ring$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$ring$is_short
+module top$lanes$3$taps$rows$ring$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$ring$one
+module top$lanes$3$taps$rows$ring$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$ring$ptr
+module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -10481,19 +11057,120 @@ module top$lanes$3$taps$rows$ring$line$ram(read_address,read_clock,read_data,wri
     input wire  write_enable;
     
     // Update code (custom)
-    reg [31:0] mem[16304:0];
+    wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+    reg [0:0] mem_0_0[16304:0];
+    reg [0:0] mem_0_1[16304:0];
+    reg [0:0] mem_0_2[16304:0];
+    reg [0:0] mem_0_3[16304:0];
+    reg [0:0] mem_0_4[16304:0];
+    reg [0:0] mem_0_5[16304:0];
+    reg [0:0] mem_0_6[16304:0];
+    reg [0:0] mem_0_7[16304:0];
+    reg [0:0] mem_0_8[16304:0];
+    reg [0:0] mem_0_9[16304:0];
+    reg [0:0] mem_0_10[16304:0];
+    reg [0:0] mem_0_11[16304:0];
+    reg [0:0] mem_0_12[16304:0];
+    reg [0:0] mem_0_13[16304:0];
+    reg [0:0] mem_0_14[16304:0];
+    reg [0:0] mem_0_15[16304:0];
+    reg [0:0] mem_0_16[16304:0];
+    reg [0:0] mem_0_17[16304:0];
+    reg [0:0] mem_0_18[16304:0];
+    reg [0:0] mem_0_19[16304:0];
+    reg [0:0] mem_0_20[16304:0];
+    reg [0:0] mem_0_21[16304:0];
+    reg [0:0] mem_0_22[16304:0];
+    reg [0:0] mem_0_23[16304:0];
+    reg [0:0] mem_0_24[16304:0];
+    reg [0:0] mem_0_25[16304:0];
+    reg [0:0] mem_0_26[16304:0];
+    reg [0:0] mem_0_27[16304:0];
+    reg [0:0] mem_0_28[16304:0];
+    reg [0:0] mem_0_29[16304:0];
+    reg [0:0] mem_0_30[16304:0];
+    reg [0:0] mem_0_31[16304:0];
+    reg [31:0] rd_0;
+    reg [31:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[13:0]][31:24], 8'd0, mem[read_address[13:0]][23:16], 8'd0, mem[read_address[13:0]][15:8], 8'd0, mem[read_address[13:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       rd_0[8:8] <= mem_0_8[read_address[13:0]];
+       rd_0[9:9] <= mem_0_9[read_address[13:0]];
+       rd_0[10:10] <= mem_0_10[read_address[13:0]];
+       rd_0[11:11] <= mem_0_11[read_address[13:0]];
+       rd_0[12:12] <= mem_0_12[read_address[13:0]];
+       rd_0[13:13] <= mem_0_13[read_address[13:0]];
+       rd_0[14:14] <= mem_0_14[read_address[13:0]];
+       rd_0[15:15] <= mem_0_15[read_address[13:0]];
+       rd_0[16:16] <= mem_0_16[read_address[13:0]];
+       rd_0[17:17] <= mem_0_17[read_address[13:0]];
+       rd_0[18:18] <= mem_0_18[read_address[13:0]];
+       rd_0[19:19] <= mem_0_19[read_address[13:0]];
+       rd_0[20:20] <= mem_0_20[read_address[13:0]];
+       rd_0[21:21] <= mem_0_21[read_address[13:0]];
+       rd_0[22:22] <= mem_0_22[read_address[13:0]];
+       rd_0[23:23] <= mem_0_23[read_address[13:0]];
+       rd_0[24:24] <= mem_0_24[read_address[13:0]];
+       rd_0[25:25] <= mem_0_25[read_address[13:0]];
+       rd_0[26:26] <= mem_0_26[read_address[13:0]];
+       rd_0[27:27] <= mem_0_27[read_address[13:0]];
+       rd_0[28:28] <= mem_0_28[read_address[13:0]];
+       rd_0[29:29] <= mem_0_29[read_address[13:0]];
+       rd_0[30:30] <= mem_0_30[read_address[13:0]];
+       rd_0[31:31] <= mem_0_31[read_address[13:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[13:0]] <= {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
+          mem_0_8[write_address[13:0]] <= stored_word[8:8];
+          mem_0_9[write_address[13:0]] <= stored_word[9:9];
+          mem_0_10[write_address[13:0]] <= stored_word[10:10];
+          mem_0_11[write_address[13:0]] <= stored_word[11:11];
+          mem_0_12[write_address[13:0]] <= stored_word[12:12];
+          mem_0_13[write_address[13:0]] <= stored_word[13:13];
+          mem_0_14[write_address[13:0]] <= stored_word[14:14];
+          mem_0_15[write_address[13:0]] <= stored_word[15:15];
+          mem_0_16[write_address[13:0]] <= stored_word[16:16];
+          mem_0_17[write_address[13:0]] <= stored_word[17:17];
+          mem_0_18[write_address[13:0]] <= stored_word[18:18];
+          mem_0_19[write_address[13:0]] <= stored_word[19:19];
+          mem_0_20[write_address[13:0]] <= stored_word[20:20];
+          mem_0_21[write_address[13:0]] <= stored_word[21:21];
+          mem_0_22[write_address[13:0]] <= stored_word[22:22];
+          mem_0_23[write_address[13:0]] <= stored_word[23:23];
+          mem_0_24[write_address[13:0]] <= stored_word[24:24];
+          mem_0_25[write_address[13:0]] <= stored_word[25:25];
+          mem_0_26[write_address[13:0]] <= stored_word[26:26];
+          mem_0_27[write_address[13:0]] <= stored_word[27:27];
+          mem_0_28[write_address[13:0]] <= stored_word[28:28];
+          mem_0_29[write_address[13:0]] <= stored_word[29:29];
+          mem_0_30[write_address[13:0]] <= stored_word[30:30];
+          mem_0_31[write_address[13:0]] <= stored_word[31:31];
        end
     end
-endmodule // top$lanes$3$taps$rows$ring$line$ram
-module top$lanes$3$taps$rows$ring$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$3$taps$rows$ring$ram
+module top$lanes$3$taps$rows$ring$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10509,25 +11186,8 @@ module top$lanes$3$taps$rows$ring$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$ring$line$rd_flipped
-module top$lanes$3$taps$rows$ring$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$taps$rows$ring$line_last
-module top$lanes$3$taps$rows$ring$out(d,q,clock);
+endmodule // top$lanes$3$taps$rows$ring$rd_flipped
+module top$lanes$3$taps$rows$ring$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -10543,7 +11203,7 @@ module top$lanes$3$taps$rows$ring$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$ring$out
+endmodule // top$lanes$3$taps$rows$ring$short
 module top$lanes$3$taps$rows$ring_last(d,q,clock);
     
     // Module arguments

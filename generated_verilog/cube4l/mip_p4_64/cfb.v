@@ -1044,6 +1044,18 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -1140,9 +1152,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -1161,12 +1173,8 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -1201,6 +1209,26 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$0$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$cfb$lanes$0$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$cfb$lanes$0$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$cfb$lanes$0$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$cfb$lanes$0$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -1342,10 +1370,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$cfb$lanes$0$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$cfb$lanes$0$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$cfb$lanes$0$sr_q sr_q(
         .d(sr_q$d),
@@ -1382,7 +1410,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -1404,6 +1432,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -1416,7 +1448,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -1438,6 +1470,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -1445,12 +1481,12 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -1547,28 +1583,28 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -1584,7 +1620,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -1594,11 +1630,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -1742,6 +1778,23 @@ module top$cfb$lanes$0$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$addr_q2
+module top$cfb$lanes$0$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$border
 module top$cfb$lanes$0$bx_q(d,q,clock);
     
     // Module arguments
@@ -1861,6 +1914,23 @@ module top$cfb$lanes$0$edge_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$edge_q
+module top$cfb$lanes$0$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$ext_q
 module top$cfb$lanes$0$face_q(d,q,clock);
     
     // Module arguments
@@ -2009,18 +2079,195 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16383:0];
+    reg [0:0] mem_0_1[16383:0];
+    reg [0:0] mem_0_2[16383:0];
+    reg [0:0] mem_0_3[16383:0];
+    reg [0:0] mem_0_4[16383:0];
+    reg [0:0] mem_0_5[16383:0];
+    reg [0:0] mem_0_6[16383:0];
+    reg [0:0] mem_0_7[16383:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
+    reg [0:0] mem_1_0[16383:0];
+    reg [0:0] mem_1_1[16383:0];
+    reg [0:0] mem_1_2[16383:0];
+    reg [0:0] mem_1_3[16383:0];
+    reg [0:0] mem_1_4[16383:0];
+    reg [0:0] mem_1_5[16383:0];
+    reg [0:0] mem_1_6[16383:0];
+    reg [0:0] mem_1_7[16383:0];
+    reg [7:0] rd_1;
+    reg [7:0] q_1;
+    reg [0:0] mem_2_0[16383:0];
+    reg [0:0] mem_2_1[16383:0];
+    reg [0:0] mem_2_2[16383:0];
+    reg [0:0] mem_2_3[16383:0];
+    reg [0:0] mem_2_4[16383:0];
+    reg [0:0] mem_2_5[16383:0];
+    reg [0:0] mem_2_6[16383:0];
+    reg [0:0] mem_2_7[16383:0];
+    reg [7:0] rd_2;
+    reg [7:0] q_2;
+    reg [0:0] mem_3_0[16383:0];
+    reg [0:0] mem_3_1[16383:0];
+    reg [0:0] mem_3_2[16383:0];
+    reg [0:0] mem_3_3[16383:0];
+    reg [0:0] mem_3_4[16383:0];
+    reg [0:0] mem_3_5[16383:0];
+    reg [0:0] mem_3_6[16383:0];
+    reg [0:0] mem_3_7[16383:0];
+    reg [7:0] rd_3;
+    reg [7:0] q_3;
+    reg [1:0] sel_1;
+    reg [1:0] sel_2;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
+       rd_1[0:0] <= mem_1_0[read_address[13:0]];
+       rd_1[1:1] <= mem_1_1[read_address[13:0]];
+       rd_1[2:2] <= mem_1_2[read_address[13:0]];
+       rd_1[3:3] <= mem_1_3[read_address[13:0]];
+       rd_1[4:4] <= mem_1_4[read_address[13:0]];
+       rd_1[5:5] <= mem_1_5[read_address[13:0]];
+       rd_1[6:6] <= mem_1_6[read_address[13:0]];
+       rd_1[7:7] <= mem_1_7[read_address[13:0]];
+       q_1 <= rd_1;
+       rd_2[0:0] <= mem_2_0[read_address[13:0]];
+       rd_2[1:1] <= mem_2_1[read_address[13:0]];
+       rd_2[2:2] <= mem_2_2[read_address[13:0]];
+       rd_2[3:3] <= mem_2_3[read_address[13:0]];
+       rd_2[4:4] <= mem_2_4[read_address[13:0]];
+       rd_2[5:5] <= mem_2_5[read_address[13:0]];
+       rd_2[6:6] <= mem_2_6[read_address[13:0]];
+       rd_2[7:7] <= mem_2_7[read_address[13:0]];
+       q_2 <= rd_2;
+       rd_3[0:0] <= mem_3_0[read_address[13:0]];
+       rd_3[1:1] <= mem_3_1[read_address[13:0]];
+       rd_3[2:2] <= mem_3_2[read_address[13:0]];
+       rd_3[3:3] <= mem_3_3[read_address[13:0]];
+       rd_3[4:4] <= mem_3_4[read_address[13:0]];
+       rd_3[5:5] <= mem_3_5[read_address[13:0]];
+       rd_3[6:6] <= mem_3_6[read_address[13:0]];
+       rd_3[7:7] <= mem_3_7[read_address[13:0]];
+       q_3 <= rd_3;
+       sel_1 <= read_address[15:14];
+       sel_2 <= sel_1;
     end
     
     always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
+       if (write_enable && write_address[15:14] == 0) begin
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
+       end
+       if (write_enable && write_address[15:14] == 1) begin
+          mem_1_0[write_address[13:0]] <= stored_word[0:0];
+          mem_1_1[write_address[13:0]] <= stored_word[1:1];
+          mem_1_2[write_address[13:0]] <= stored_word[2:2];
+          mem_1_3[write_address[13:0]] <= stored_word[3:3];
+          mem_1_4[write_address[13:0]] <= stored_word[4:4];
+          mem_1_5[write_address[13:0]] <= stored_word[5:5];
+          mem_1_6[write_address[13:0]] <= stored_word[6:6];
+          mem_1_7[write_address[13:0]] <= stored_word[7:7];
+       end
+       if (write_enable && write_address[15:14] == 2) begin
+          mem_2_0[write_address[13:0]] <= stored_word[0:0];
+          mem_2_1[write_address[13:0]] <= stored_word[1:1];
+          mem_2_2[write_address[13:0]] <= stored_word[2:2];
+          mem_2_3[write_address[13:0]] <= stored_word[3:3];
+          mem_2_4[write_address[13:0]] <= stored_word[4:4];
+          mem_2_5[write_address[13:0]] <= stored_word[5:5];
+          mem_2_6[write_address[13:0]] <= stored_word[6:6];
+          mem_2_7[write_address[13:0]] <= stored_word[7:7];
+       end
+       if (write_enable && write_address[15:14] == 3) begin
+          mem_3_0[write_address[13:0]] <= stored_word[0:0];
+          mem_3_1[write_address[13:0]] <= stored_word[1:1];
+          mem_3_2[write_address[13:0]] <= stored_word[2:2];
+          mem_3_3[write_address[13:0]] <= stored_word[3:3];
+          mem_3_4[write_address[13:0]] <= stored_word[4:4];
+          mem_3_5[write_address[13:0]] <= stored_word[5:5];
+          mem_3_6[write_address[13:0]] <= stored_word[6:6];
+          mem_3_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
+    
+    always @(*) begin
+       case (sel_2)
+          0: read_data = {8'd0, q_0[7:0]};
+          1: read_data = {8'd0, q_1[7:0]};
+          2: read_data = {8'd0, q_2[7:0]};
+          3: read_data = {8'd0, q_3[7:0]};
+          default: read_data = {8'd0, q_0[7:0]};
+       endcase
+    end
 endmodule // top$cfb$lanes$0$memory
+module top$cfb$lanes$0$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$nx_last
+module top$cfb$lanes$0$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$ny_last
+module top$cfb$lanes$0$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$nz_last
 module top$cfb$lanes$0$pad_q(d,q,clock);
     
     // Module arguments
@@ -2157,23 +2404,6 @@ module top$cfb$lanes$0$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$sr_q
-module top$cfb$lanes$0$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$cfb$lanes$0$value_q
 module top$cfb$lanes$0$x_q(d,q,clock);
     
     // Module arguments
@@ -2287,6 +2517,18 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -2383,9 +2625,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -2404,12 +2646,8 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -2444,6 +2682,26 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$1$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$cfb$lanes$1$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$cfb$lanes$1$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$cfb$lanes$1$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$cfb$lanes$1$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -2585,10 +2843,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$cfb$lanes$1$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$cfb$lanes$1$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$cfb$lanes$1$sr_q sr_q(
         .d(sr_q$d),
@@ -2625,7 +2883,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -2647,6 +2905,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -2659,7 +2921,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -2681,6 +2943,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -2688,12 +2954,12 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -2790,28 +3056,28 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -2827,7 +3093,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -2837,11 +3103,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -2985,6 +3251,23 @@ module top$cfb$lanes$1$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$addr_q2
+module top$cfb$lanes$1$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$border
 module top$cfb$lanes$1$bx_q(d,q,clock);
     
     // Module arguments
@@ -3104,6 +3387,23 @@ module top$cfb$lanes$1$edge_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$edge_q
+module top$cfb$lanes$1$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$ext_q
 module top$cfb$lanes$1$face_q(d,q,clock);
     
     // Module arguments
@@ -3252,18 +3552,195 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16383:0];
+    reg [0:0] mem_0_1[16383:0];
+    reg [0:0] mem_0_2[16383:0];
+    reg [0:0] mem_0_3[16383:0];
+    reg [0:0] mem_0_4[16383:0];
+    reg [0:0] mem_0_5[16383:0];
+    reg [0:0] mem_0_6[16383:0];
+    reg [0:0] mem_0_7[16383:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
+    reg [0:0] mem_1_0[16383:0];
+    reg [0:0] mem_1_1[16383:0];
+    reg [0:0] mem_1_2[16383:0];
+    reg [0:0] mem_1_3[16383:0];
+    reg [0:0] mem_1_4[16383:0];
+    reg [0:0] mem_1_5[16383:0];
+    reg [0:0] mem_1_6[16383:0];
+    reg [0:0] mem_1_7[16383:0];
+    reg [7:0] rd_1;
+    reg [7:0] q_1;
+    reg [0:0] mem_2_0[16383:0];
+    reg [0:0] mem_2_1[16383:0];
+    reg [0:0] mem_2_2[16383:0];
+    reg [0:0] mem_2_3[16383:0];
+    reg [0:0] mem_2_4[16383:0];
+    reg [0:0] mem_2_5[16383:0];
+    reg [0:0] mem_2_6[16383:0];
+    reg [0:0] mem_2_7[16383:0];
+    reg [7:0] rd_2;
+    reg [7:0] q_2;
+    reg [0:0] mem_3_0[16383:0];
+    reg [0:0] mem_3_1[16383:0];
+    reg [0:0] mem_3_2[16383:0];
+    reg [0:0] mem_3_3[16383:0];
+    reg [0:0] mem_3_4[16383:0];
+    reg [0:0] mem_3_5[16383:0];
+    reg [0:0] mem_3_6[16383:0];
+    reg [0:0] mem_3_7[16383:0];
+    reg [7:0] rd_3;
+    reg [7:0] q_3;
+    reg [1:0] sel_1;
+    reg [1:0] sel_2;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
+       rd_1[0:0] <= mem_1_0[read_address[13:0]];
+       rd_1[1:1] <= mem_1_1[read_address[13:0]];
+       rd_1[2:2] <= mem_1_2[read_address[13:0]];
+       rd_1[3:3] <= mem_1_3[read_address[13:0]];
+       rd_1[4:4] <= mem_1_4[read_address[13:0]];
+       rd_1[5:5] <= mem_1_5[read_address[13:0]];
+       rd_1[6:6] <= mem_1_6[read_address[13:0]];
+       rd_1[7:7] <= mem_1_7[read_address[13:0]];
+       q_1 <= rd_1;
+       rd_2[0:0] <= mem_2_0[read_address[13:0]];
+       rd_2[1:1] <= mem_2_1[read_address[13:0]];
+       rd_2[2:2] <= mem_2_2[read_address[13:0]];
+       rd_2[3:3] <= mem_2_3[read_address[13:0]];
+       rd_2[4:4] <= mem_2_4[read_address[13:0]];
+       rd_2[5:5] <= mem_2_5[read_address[13:0]];
+       rd_2[6:6] <= mem_2_6[read_address[13:0]];
+       rd_2[7:7] <= mem_2_7[read_address[13:0]];
+       q_2 <= rd_2;
+       rd_3[0:0] <= mem_3_0[read_address[13:0]];
+       rd_3[1:1] <= mem_3_1[read_address[13:0]];
+       rd_3[2:2] <= mem_3_2[read_address[13:0]];
+       rd_3[3:3] <= mem_3_3[read_address[13:0]];
+       rd_3[4:4] <= mem_3_4[read_address[13:0]];
+       rd_3[5:5] <= mem_3_5[read_address[13:0]];
+       rd_3[6:6] <= mem_3_6[read_address[13:0]];
+       rd_3[7:7] <= mem_3_7[read_address[13:0]];
+       q_3 <= rd_3;
+       sel_1 <= read_address[15:14];
+       sel_2 <= sel_1;
     end
     
     always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
+       if (write_enable && write_address[15:14] == 0) begin
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
+       end
+       if (write_enable && write_address[15:14] == 1) begin
+          mem_1_0[write_address[13:0]] <= stored_word[0:0];
+          mem_1_1[write_address[13:0]] <= stored_word[1:1];
+          mem_1_2[write_address[13:0]] <= stored_word[2:2];
+          mem_1_3[write_address[13:0]] <= stored_word[3:3];
+          mem_1_4[write_address[13:0]] <= stored_word[4:4];
+          mem_1_5[write_address[13:0]] <= stored_word[5:5];
+          mem_1_6[write_address[13:0]] <= stored_word[6:6];
+          mem_1_7[write_address[13:0]] <= stored_word[7:7];
+       end
+       if (write_enable && write_address[15:14] == 2) begin
+          mem_2_0[write_address[13:0]] <= stored_word[0:0];
+          mem_2_1[write_address[13:0]] <= stored_word[1:1];
+          mem_2_2[write_address[13:0]] <= stored_word[2:2];
+          mem_2_3[write_address[13:0]] <= stored_word[3:3];
+          mem_2_4[write_address[13:0]] <= stored_word[4:4];
+          mem_2_5[write_address[13:0]] <= stored_word[5:5];
+          mem_2_6[write_address[13:0]] <= stored_word[6:6];
+          mem_2_7[write_address[13:0]] <= stored_word[7:7];
+       end
+       if (write_enable && write_address[15:14] == 3) begin
+          mem_3_0[write_address[13:0]] <= stored_word[0:0];
+          mem_3_1[write_address[13:0]] <= stored_word[1:1];
+          mem_3_2[write_address[13:0]] <= stored_word[2:2];
+          mem_3_3[write_address[13:0]] <= stored_word[3:3];
+          mem_3_4[write_address[13:0]] <= stored_word[4:4];
+          mem_3_5[write_address[13:0]] <= stored_word[5:5];
+          mem_3_6[write_address[13:0]] <= stored_word[6:6];
+          mem_3_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
+    
+    always @(*) begin
+       case (sel_2)
+          0: read_data = {8'd0, q_0[7:0]};
+          1: read_data = {8'd0, q_1[7:0]};
+          2: read_data = {8'd0, q_2[7:0]};
+          3: read_data = {8'd0, q_3[7:0]};
+          default: read_data = {8'd0, q_0[7:0]};
+       endcase
+    end
 endmodule // top$cfb$lanes$1$memory
+module top$cfb$lanes$1$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$nx_last
+module top$cfb$lanes$1$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$ny_last
+module top$cfb$lanes$1$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$nz_last
 module top$cfb$lanes$1$pad_q(d,q,clock);
     
     // Module arguments
@@ -3400,23 +3877,6 @@ module top$cfb$lanes$1$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$sr_q
-module top$cfb$lanes$1$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$cfb$lanes$1$value_q
 module top$cfb$lanes$1$x_q(d,q,clock);
     
     // Module arguments
@@ -3530,6 +3990,18 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -3626,9 +4098,9 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -3647,12 +4119,8 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -3687,6 +4155,26 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$2$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$cfb$lanes$2$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$cfb$lanes$2$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$cfb$lanes$2$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$cfb$lanes$2$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -3828,10 +4316,10 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$cfb$lanes$2$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$cfb$lanes$2$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$cfb$lanes$2$sr_q sr_q(
         .d(sr_q$d),
@@ -3868,7 +4356,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -3890,6 +4378,10 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -3902,7 +4394,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -3924,6 +4416,10 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -3931,12 +4427,12 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -4033,28 +4529,28 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -4070,7 +4566,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -4080,11 +4576,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -4228,6 +4724,23 @@ module top$cfb$lanes$2$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$addr_q2
+module top$cfb$lanes$2$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$border
 module top$cfb$lanes$2$bx_q(d,q,clock);
     
     // Module arguments
@@ -4347,6 +4860,23 @@ module top$cfb$lanes$2$edge_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$edge_q
+module top$cfb$lanes$2$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$ext_q
 module top$cfb$lanes$2$face_q(d,q,clock);
     
     // Module arguments
@@ -4495,18 +5025,195 @@ module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16383:0];
+    reg [0:0] mem_0_1[16383:0];
+    reg [0:0] mem_0_2[16383:0];
+    reg [0:0] mem_0_3[16383:0];
+    reg [0:0] mem_0_4[16383:0];
+    reg [0:0] mem_0_5[16383:0];
+    reg [0:0] mem_0_6[16383:0];
+    reg [0:0] mem_0_7[16383:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
+    reg [0:0] mem_1_0[16383:0];
+    reg [0:0] mem_1_1[16383:0];
+    reg [0:0] mem_1_2[16383:0];
+    reg [0:0] mem_1_3[16383:0];
+    reg [0:0] mem_1_4[16383:0];
+    reg [0:0] mem_1_5[16383:0];
+    reg [0:0] mem_1_6[16383:0];
+    reg [0:0] mem_1_7[16383:0];
+    reg [7:0] rd_1;
+    reg [7:0] q_1;
+    reg [0:0] mem_2_0[16383:0];
+    reg [0:0] mem_2_1[16383:0];
+    reg [0:0] mem_2_2[16383:0];
+    reg [0:0] mem_2_3[16383:0];
+    reg [0:0] mem_2_4[16383:0];
+    reg [0:0] mem_2_5[16383:0];
+    reg [0:0] mem_2_6[16383:0];
+    reg [0:0] mem_2_7[16383:0];
+    reg [7:0] rd_2;
+    reg [7:0] q_2;
+    reg [0:0] mem_3_0[16383:0];
+    reg [0:0] mem_3_1[16383:0];
+    reg [0:0] mem_3_2[16383:0];
+    reg [0:0] mem_3_3[16383:0];
+    reg [0:0] mem_3_4[16383:0];
+    reg [0:0] mem_3_5[16383:0];
+    reg [0:0] mem_3_6[16383:0];
+    reg [0:0] mem_3_7[16383:0];
+    reg [7:0] rd_3;
+    reg [7:0] q_3;
+    reg [1:0] sel_1;
+    reg [1:0] sel_2;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
+       rd_1[0:0] <= mem_1_0[read_address[13:0]];
+       rd_1[1:1] <= mem_1_1[read_address[13:0]];
+       rd_1[2:2] <= mem_1_2[read_address[13:0]];
+       rd_1[3:3] <= mem_1_3[read_address[13:0]];
+       rd_1[4:4] <= mem_1_4[read_address[13:0]];
+       rd_1[5:5] <= mem_1_5[read_address[13:0]];
+       rd_1[6:6] <= mem_1_6[read_address[13:0]];
+       rd_1[7:7] <= mem_1_7[read_address[13:0]];
+       q_1 <= rd_1;
+       rd_2[0:0] <= mem_2_0[read_address[13:0]];
+       rd_2[1:1] <= mem_2_1[read_address[13:0]];
+       rd_2[2:2] <= mem_2_2[read_address[13:0]];
+       rd_2[3:3] <= mem_2_3[read_address[13:0]];
+       rd_2[4:4] <= mem_2_4[read_address[13:0]];
+       rd_2[5:5] <= mem_2_5[read_address[13:0]];
+       rd_2[6:6] <= mem_2_6[read_address[13:0]];
+       rd_2[7:7] <= mem_2_7[read_address[13:0]];
+       q_2 <= rd_2;
+       rd_3[0:0] <= mem_3_0[read_address[13:0]];
+       rd_3[1:1] <= mem_3_1[read_address[13:0]];
+       rd_3[2:2] <= mem_3_2[read_address[13:0]];
+       rd_3[3:3] <= mem_3_3[read_address[13:0]];
+       rd_3[4:4] <= mem_3_4[read_address[13:0]];
+       rd_3[5:5] <= mem_3_5[read_address[13:0]];
+       rd_3[6:6] <= mem_3_6[read_address[13:0]];
+       rd_3[7:7] <= mem_3_7[read_address[13:0]];
+       q_3 <= rd_3;
+       sel_1 <= read_address[15:14];
+       sel_2 <= sel_1;
     end
     
     always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
+       if (write_enable && write_address[15:14] == 0) begin
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
+       end
+       if (write_enable && write_address[15:14] == 1) begin
+          mem_1_0[write_address[13:0]] <= stored_word[0:0];
+          mem_1_1[write_address[13:0]] <= stored_word[1:1];
+          mem_1_2[write_address[13:0]] <= stored_word[2:2];
+          mem_1_3[write_address[13:0]] <= stored_word[3:3];
+          mem_1_4[write_address[13:0]] <= stored_word[4:4];
+          mem_1_5[write_address[13:0]] <= stored_word[5:5];
+          mem_1_6[write_address[13:0]] <= stored_word[6:6];
+          mem_1_7[write_address[13:0]] <= stored_word[7:7];
+       end
+       if (write_enable && write_address[15:14] == 2) begin
+          mem_2_0[write_address[13:0]] <= stored_word[0:0];
+          mem_2_1[write_address[13:0]] <= stored_word[1:1];
+          mem_2_2[write_address[13:0]] <= stored_word[2:2];
+          mem_2_3[write_address[13:0]] <= stored_word[3:3];
+          mem_2_4[write_address[13:0]] <= stored_word[4:4];
+          mem_2_5[write_address[13:0]] <= stored_word[5:5];
+          mem_2_6[write_address[13:0]] <= stored_word[6:6];
+          mem_2_7[write_address[13:0]] <= stored_word[7:7];
+       end
+       if (write_enable && write_address[15:14] == 3) begin
+          mem_3_0[write_address[13:0]] <= stored_word[0:0];
+          mem_3_1[write_address[13:0]] <= stored_word[1:1];
+          mem_3_2[write_address[13:0]] <= stored_word[2:2];
+          mem_3_3[write_address[13:0]] <= stored_word[3:3];
+          mem_3_4[write_address[13:0]] <= stored_word[4:4];
+          mem_3_5[write_address[13:0]] <= stored_word[5:5];
+          mem_3_6[write_address[13:0]] <= stored_word[6:6];
+          mem_3_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
+    
+    always @(*) begin
+       case (sel_2)
+          0: read_data = {8'd0, q_0[7:0]};
+          1: read_data = {8'd0, q_1[7:0]};
+          2: read_data = {8'd0, q_2[7:0]};
+          3: read_data = {8'd0, q_3[7:0]};
+          default: read_data = {8'd0, q_0[7:0]};
+       endcase
+    end
 endmodule // top$cfb$lanes$2$memory
+module top$cfb$lanes$2$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$nx_last
+module top$cfb$lanes$2$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$ny_last
+module top$cfb$lanes$2$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$nz_last
 module top$cfb$lanes$2$pad_q(d,q,clock);
     
     // Module arguments
@@ -4643,23 +5350,6 @@ module top$cfb$lanes$2$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$sr_q
-module top$cfb$lanes$2$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$cfb$lanes$2$value_q
 module top$cfb$lanes$2$x_q(d,q,clock);
     
     // Module arguments
@@ -4773,6 +5463,18 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx_last$d;
+    wire  [15:0] nx_last$q;
+    reg  nx_last$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] nz_last$d;
+    wire  [15:0] nz_last$q;
+    reg  nz_last$clock;
+    reg  [15:0] border$d;
+    wire  [15:0] border$q;
+    reg  border$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -4869,9 +5571,9 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
-    reg  [15:0] value_q$d;
-    wire  [15:0] value_q$q;
-    reg  value_q$clock;
+    reg  [15:0] ext_q$d;
+    wire  [15:0] ext_q$q;
+    reg  ext_q$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -4890,12 +5592,8 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     
     // Local signals
     reg  [15:0] nx;
-    reg  [15:0] nx_last;
-    reg  [15:0] ny_last;
-    reg  [15:0] nz_last;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] border;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
@@ -4930,6 +5628,26 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$3$nx_last nx_last(
+        .d(nx_last$d),
+        .q(nx_last$q),
+        .clock(nx_last$clock)
+    );
+    top$cfb$lanes$3$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$cfb$lanes$3$nz_last nz_last(
+        .d(nz_last$d),
+        .q(nz_last$q),
+        .clock(nz_last$clock)
+    );
+    top$cfb$lanes$3$border border(
+        .d(border$d),
+        .q(border$q),
+        .clock(border$clock)
     );
     top$cfb$lanes$3$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -5071,10 +5789,10 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(pad_q$q),
         .clock(pad_q$clock)
     );
-    top$cfb$lanes$3$value_q value_q(
-        .d(value_q$d),
-        .q(value_q$q),
-        .clock(value_q$clock)
+    top$cfb$lanes$3$ext_q ext_q(
+        .d(ext_q$d),
+        .q(ext_q$q),
+        .clock(ext_q$clock)
     );
     top$cfb$lanes$3$sr_q sr_q(
         .d(sr_q$d),
@@ -5111,7 +5829,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$clock = clock;
         addr_q2$clock = clock;
         pad_q$clock = clock;
-        value_q$clock = clock;
+        ext_q$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -5133,6 +5851,10 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        nx_last$clock = clock;
+        ny_last$clock = clock;
+        nz_last$clock = clock;
+        border$clock = clock;
         par_dxn$clock = clock;
         par_dxm$clock = clock;
         par_dx_pos$clock = clock;
@@ -5145,7 +5867,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
         pad_q$d = pad_q$q;
-        value_q$d = value_q$q;
+        ext_q$d = ext_q$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -5167,6 +5889,10 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        nx_last$d = nx_last$q;
+        ny_last$d = ny_last$q;
+        nz_last$d = nz_last$q;
+        border$d = border$q;
         par_dxn$d = par_dxn$q;
         par_dxm$d = par_dxm$q;
         par_dx_pos$d = par_dx_pos$q;
@@ -5174,12 +5900,12 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
         nx = dims[('h0)+:(16)];
-        nx_last = dims[('h0)+:(16)] - 'h1;
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        nz_last = dims[('h20)+:(16)] - 'h1;
+        nx_last$d = dims[('h0)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        nz_last$d = dims[('h20)+:(16)] - 'h1;
         z0 = slices[('h0)+:(16)];
         z1 = slices[('h10)+:(16)];
-        border = slices[('h10)+:(16)] - slices[('h0)+:(16)];
+        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
@@ -5276,28 +6002,28 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         face_c = 'h0;
         depth = z1 - n_s;
-        bx = border + xc;
-        by = border + n_beam;
-        if ((xc == nx_last) & dx_pos) begin
+        bx = border$q + xc;
+        by = border$q + n_beam;
+        if ((xc == nx_last$q) & dx_pos) begin
             face_c = 'h2;
-            bx = border + xc + depth;
+            bx = border$q + xc + depth;
         end
         else if ((xc == 'h0) & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border - depth;
+            bx = border$q - depth;
         end
-        else if ((n_beam == ny_last) & dy_pos) begin
+        else if ((n_beam == ny_last$q) & dy_pos) begin
             face_c = 'h4;
-            by = border + n_beam + depth;
+            by = border$q + n_beam + depth;
         end
         else if ((n_beam == 'h0) & dy_neg_nz) begin
             face_c = 'h5;
-            by = border - depth;
+            by = border$q - depth;
         end
         if (n_s == z1) begin
             face_c = 'h1;
-            bx = border + xc;
-            by = border + n_beam;
+            bx = border$q + xc;
+            by = border$q + n_beam;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -5313,7 +6039,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last) | (n_beam == ny_last) | (n_s == nz_last);
+        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -5323,11 +6049,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         dym_q$d = 16'(dym);
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
-        value_q$d = memory$read_data;
+        ext_q$d = ext_data;
+        value_pass = memory$read_data;
         if (external) begin
-            value_q$d = ext_data;
+            value_pass = ext_q$q;
         end
-        value_pass = value_q$q;
         if (pad_q$q) begin
             value_pass = 'h0;
         end
@@ -5471,6 +6197,23 @@ module top$cfb$lanes$3$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$addr_q2
+module top$cfb$lanes$3$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$border
 module top$cfb$lanes$3$bx_q(d,q,clock);
     
     // Module arguments
@@ -5590,6 +6333,23 @@ module top$cfb$lanes$3$edge_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$edge_q
+module top$cfb$lanes$3$ext_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$ext_q
 module top$cfb$lanes$3$face_q(d,q,clock);
     
     // Module arguments
@@ -5738,18 +6498,195 @@ module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,wr
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[65535:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [0:0] mem_0_0[16383:0];
+    reg [0:0] mem_0_1[16383:0];
+    reg [0:0] mem_0_2[16383:0];
+    reg [0:0] mem_0_3[16383:0];
+    reg [0:0] mem_0_4[16383:0];
+    reg [0:0] mem_0_5[16383:0];
+    reg [0:0] mem_0_6[16383:0];
+    reg [0:0] mem_0_7[16383:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
+    reg [0:0] mem_1_0[16383:0];
+    reg [0:0] mem_1_1[16383:0];
+    reg [0:0] mem_1_2[16383:0];
+    reg [0:0] mem_1_3[16383:0];
+    reg [0:0] mem_1_4[16383:0];
+    reg [0:0] mem_1_5[16383:0];
+    reg [0:0] mem_1_6[16383:0];
+    reg [0:0] mem_1_7[16383:0];
+    reg [7:0] rd_1;
+    reg [7:0] q_1;
+    reg [0:0] mem_2_0[16383:0];
+    reg [0:0] mem_2_1[16383:0];
+    reg [0:0] mem_2_2[16383:0];
+    reg [0:0] mem_2_3[16383:0];
+    reg [0:0] mem_2_4[16383:0];
+    reg [0:0] mem_2_5[16383:0];
+    reg [0:0] mem_2_6[16383:0];
+    reg [0:0] mem_2_7[16383:0];
+    reg [7:0] rd_2;
+    reg [7:0] q_2;
+    reg [0:0] mem_3_0[16383:0];
+    reg [0:0] mem_3_1[16383:0];
+    reg [0:0] mem_3_2[16383:0];
+    reg [0:0] mem_3_3[16383:0];
+    reg [0:0] mem_3_4[16383:0];
+    reg [0:0] mem_3_5[16383:0];
+    reg [0:0] mem_3_6[16383:0];
+    reg [0:0] mem_3_7[16383:0];
+    reg [7:0] rd_3;
+    reg [7:0] q_3;
+    reg [1:0] sel_1;
+    reg [1:0] sel_2;
     
     always @(posedge read_clock) begin
-       read_data <= {8'd0, mem[read_address[15:0]][7:0]};
+       rd_0[0:0] <= mem_0_0[read_address[13:0]];
+       rd_0[1:1] <= mem_0_1[read_address[13:0]];
+       rd_0[2:2] <= mem_0_2[read_address[13:0]];
+       rd_0[3:3] <= mem_0_3[read_address[13:0]];
+       rd_0[4:4] <= mem_0_4[read_address[13:0]];
+       rd_0[5:5] <= mem_0_5[read_address[13:0]];
+       rd_0[6:6] <= mem_0_6[read_address[13:0]];
+       rd_0[7:7] <= mem_0_7[read_address[13:0]];
+       q_0 <= rd_0;
+       rd_1[0:0] <= mem_1_0[read_address[13:0]];
+       rd_1[1:1] <= mem_1_1[read_address[13:0]];
+       rd_1[2:2] <= mem_1_2[read_address[13:0]];
+       rd_1[3:3] <= mem_1_3[read_address[13:0]];
+       rd_1[4:4] <= mem_1_4[read_address[13:0]];
+       rd_1[5:5] <= mem_1_5[read_address[13:0]];
+       rd_1[6:6] <= mem_1_6[read_address[13:0]];
+       rd_1[7:7] <= mem_1_7[read_address[13:0]];
+       q_1 <= rd_1;
+       rd_2[0:0] <= mem_2_0[read_address[13:0]];
+       rd_2[1:1] <= mem_2_1[read_address[13:0]];
+       rd_2[2:2] <= mem_2_2[read_address[13:0]];
+       rd_2[3:3] <= mem_2_3[read_address[13:0]];
+       rd_2[4:4] <= mem_2_4[read_address[13:0]];
+       rd_2[5:5] <= mem_2_5[read_address[13:0]];
+       rd_2[6:6] <= mem_2_6[read_address[13:0]];
+       rd_2[7:7] <= mem_2_7[read_address[13:0]];
+       q_2 <= rd_2;
+       rd_3[0:0] <= mem_3_0[read_address[13:0]];
+       rd_3[1:1] <= mem_3_1[read_address[13:0]];
+       rd_3[2:2] <= mem_3_2[read_address[13:0]];
+       rd_3[3:3] <= mem_3_3[read_address[13:0]];
+       rd_3[4:4] <= mem_3_4[read_address[13:0]];
+       rd_3[5:5] <= mem_3_5[read_address[13:0]];
+       rd_3[6:6] <= mem_3_6[read_address[13:0]];
+       rd_3[7:7] <= mem_3_7[read_address[13:0]];
+       q_3 <= rd_3;
+       sel_1 <= read_address[15:14];
+       sel_2 <= sel_1;
     end
     
     always @(posedge write_clock) begin
-       if (write_enable) begin
-          mem[write_address[15:0]] <= {write_data[7:0]};
+       if (write_enable && write_address[15:14] == 0) begin
+          mem_0_0[write_address[13:0]] <= stored_word[0:0];
+          mem_0_1[write_address[13:0]] <= stored_word[1:1];
+          mem_0_2[write_address[13:0]] <= stored_word[2:2];
+          mem_0_3[write_address[13:0]] <= stored_word[3:3];
+          mem_0_4[write_address[13:0]] <= stored_word[4:4];
+          mem_0_5[write_address[13:0]] <= stored_word[5:5];
+          mem_0_6[write_address[13:0]] <= stored_word[6:6];
+          mem_0_7[write_address[13:0]] <= stored_word[7:7];
+       end
+       if (write_enable && write_address[15:14] == 1) begin
+          mem_1_0[write_address[13:0]] <= stored_word[0:0];
+          mem_1_1[write_address[13:0]] <= stored_word[1:1];
+          mem_1_2[write_address[13:0]] <= stored_word[2:2];
+          mem_1_3[write_address[13:0]] <= stored_word[3:3];
+          mem_1_4[write_address[13:0]] <= stored_word[4:4];
+          mem_1_5[write_address[13:0]] <= stored_word[5:5];
+          mem_1_6[write_address[13:0]] <= stored_word[6:6];
+          mem_1_7[write_address[13:0]] <= stored_word[7:7];
+       end
+       if (write_enable && write_address[15:14] == 2) begin
+          mem_2_0[write_address[13:0]] <= stored_word[0:0];
+          mem_2_1[write_address[13:0]] <= stored_word[1:1];
+          mem_2_2[write_address[13:0]] <= stored_word[2:2];
+          mem_2_3[write_address[13:0]] <= stored_word[3:3];
+          mem_2_4[write_address[13:0]] <= stored_word[4:4];
+          mem_2_5[write_address[13:0]] <= stored_word[5:5];
+          mem_2_6[write_address[13:0]] <= stored_word[6:6];
+          mem_2_7[write_address[13:0]] <= stored_word[7:7];
+       end
+       if (write_enable && write_address[15:14] == 3) begin
+          mem_3_0[write_address[13:0]] <= stored_word[0:0];
+          mem_3_1[write_address[13:0]] <= stored_word[1:1];
+          mem_3_2[write_address[13:0]] <= stored_word[2:2];
+          mem_3_3[write_address[13:0]] <= stored_word[3:3];
+          mem_3_4[write_address[13:0]] <= stored_word[4:4];
+          mem_3_5[write_address[13:0]] <= stored_word[5:5];
+          mem_3_6[write_address[13:0]] <= stored_word[6:6];
+          mem_3_7[write_address[13:0]] <= stored_word[7:7];
        end
     end
+    
+    always @(*) begin
+       case (sel_2)
+          0: read_data = {8'd0, q_0[7:0]};
+          1: read_data = {8'd0, q_1[7:0]};
+          2: read_data = {8'd0, q_2[7:0]};
+          3: read_data = {8'd0, q_3[7:0]};
+          default: read_data = {8'd0, q_0[7:0]};
+       endcase
+    end
 endmodule // top$cfb$lanes$3$memory
+module top$cfb$lanes$3$nx_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$nx_last
+module top$cfb$lanes$3$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$ny_last
+module top$cfb$lanes$3$nz_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$nz_last
 module top$cfb$lanes$3$pad_q(d,q,clock);
     
     // Module arguments
@@ -5886,23 +6823,6 @@ module top$cfb$lanes$3$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$sr_q
-module top$cfb$lanes$3$value_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$cfb$lanes$3$value_q
 module top$cfb$lanes$3$x_q(d,q,clock);
     
     // Module arguments

@@ -962,75 +962,9 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$0$taps$rows$beam0$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$0$taps$rows$beam0$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$0$taps$rows$beam0$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$0$taps$rows$beam0
-module top$lanes$0$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
     // Stub signals
@@ -1041,6 +975,9 @@ module top$lanes$0$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -1050,13 +987,22 @@ module top$lanes$0$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$0$taps$rows$beam0$line$ram ram(
+    top$lanes$0$taps$rows$beam0$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -1065,76 +1011,95 @@ module top$lanes$0$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$0$taps$rows$beam0$line$ptr ptr(
+    top$lanes$0$taps$rows$beam0$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$0$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$0$taps$rows$beam0$line$rd_flipped rd_flipped(
+    top$lanes$0$taps$rows$beam0$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$0$taps$rows$beam0$line$one one(
+    top$lanes$0$taps$rows$beam0$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$0$taps$rows$beam0$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$0$taps$rows$beam0$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$0$taps$rows$beam0$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$0$taps$rows$beam0$line
-module top$lanes$0$taps$rows$beam0$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$beam0$line$one
-module top$lanes$0$taps$rows$beam0$line$ptr(d,q,clock);
+endmodule // top$lanes$0$taps$rows$beam0
+module top$lanes$0$taps$rows$beam0$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1150,8 +1115,76 @@ module top$lanes$0$taps$rows$beam0$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam0$line$ptr
-module top$lanes$0$taps$rows$beam0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$taps$rows$beam0$bound
+module top$lanes$0$taps$rows$beam0$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$is_one
+module top$lanes$0$taps$rows$beam0$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$is_short
+module top$lanes$0$taps$rows$beam0$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$one
+module top$lanes$0$taps$rows$beam0$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$ptr
+module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1163,20 +1196,28 @@ module top$lanes$0$taps$rows$beam0$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[14:0];
+    reg [7:0] mem_0_0[14:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[3:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[3:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[3:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[3:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$0$taps$rows$beam0$line$ram
-module top$lanes$0$taps$rows$beam0$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {56'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$0$taps$rows$beam0$ram
+module top$lanes$0$taps$rows$beam0$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1192,25 +1233,8 @@ module top$lanes$0$taps$rows$beam0$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam0$line$rd_flipped
-module top$lanes$0$taps$rows$beam0$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$beam0$line_last
-module top$lanes$0$taps$rows$beam0$out(d,q,clock);
+endmodule // top$lanes$0$taps$rows$beam0$rd_flipped
+module top$lanes$0$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -1226,7 +1250,7 @@ module top$lanes$0$taps$rows$beam0$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam0$out
+endmodule // top$lanes$0$taps$rows$beam0$short
 module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1237,75 +1261,9 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$0$taps$rows$beam1$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$0$taps$rows$beam1$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$0$taps$rows$beam1$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$0$taps$rows$beam1
-module top$lanes$0$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
     // Stub signals
@@ -1316,6 +1274,9 @@ module top$lanes$0$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -1325,13 +1286,22 @@ module top$lanes$0$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$0$taps$rows$beam1$line$ram ram(
+    top$lanes$0$taps$rows$beam1$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -1340,76 +1310,95 @@ module top$lanes$0$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$0$taps$rows$beam1$line$ptr ptr(
+    top$lanes$0$taps$rows$beam1$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$0$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$0$taps$rows$beam1$line$rd_flipped rd_flipped(
+    top$lanes$0$taps$rows$beam1$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$0$taps$rows$beam1$line$one one(
+    top$lanes$0$taps$rows$beam1$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$0$taps$rows$beam1$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$0$taps$rows$beam1$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$0$taps$rows$beam1$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$0$taps$rows$beam1$line
-module top$lanes$0$taps$rows$beam1$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$beam1$line$one
-module top$lanes$0$taps$rows$beam1$line$ptr(d,q,clock);
+endmodule // top$lanes$0$taps$rows$beam1
+module top$lanes$0$taps$rows$beam1$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1425,8 +1414,76 @@ module top$lanes$0$taps$rows$beam1$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam1$line$ptr
-module top$lanes$0$taps$rows$beam1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$taps$rows$beam1$bound
+module top$lanes$0$taps$rows$beam1$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$is_one
+module top$lanes$0$taps$rows$beam1$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$is_short
+module top$lanes$0$taps$rows$beam1$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$one
+module top$lanes$0$taps$rows$beam1$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$ptr
+module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1438,20 +1495,28 @@ module top$lanes$0$taps$rows$beam1$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[14:0];
+    reg [7:0] mem_0_0[14:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[3:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[3:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[3:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[3:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$0$taps$rows$beam1$line$ram
-module top$lanes$0$taps$rows$beam1$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {56'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$0$taps$rows$beam1$ram
+module top$lanes$0$taps$rows$beam1$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1467,25 +1532,8 @@ module top$lanes$0$taps$rows$beam1$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam1$line$rd_flipped
-module top$lanes$0$taps$rows$beam1$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$beam1$line_last
-module top$lanes$0$taps$rows$beam1$out(d,q,clock);
+endmodule // top$lanes$0$taps$rows$beam1$rd_flipped
+module top$lanes$0$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -1501,7 +1549,7 @@ module top$lanes$0$taps$rows$beam1$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam1$out
+endmodule // top$lanes$0$taps$rows$beam1$short
 module top$lanes$0$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -1529,75 +1577,9 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$0$taps$rows$ring$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$0$taps$rows$ring$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$0$taps$rows$ring$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$0$taps$rows$ring
-module top$lanes$0$taps$rows$ring$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e0;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
     // Stub signals
@@ -1608,6 +1590,9 @@ module top$lanes$0$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -1617,13 +1602,22 @@ module top$lanes$0$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$0$taps$rows$ring$line$ram ram(
+    top$lanes$0$taps$rows$ring$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -1632,76 +1626,95 @@ module top$lanes$0$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$0$taps$rows$ring$line$ptr ptr(
+    top$lanes$0$taps$rows$ring$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$0$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$0$taps$rows$ring$line$rd_flipped rd_flipped(
+    top$lanes$0$taps$rows$ring$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$0$taps$rows$ring$line$one one(
+    top$lanes$0$taps$rows$ring$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$0$taps$rows$ring$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$0$taps$rows$ring$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$0$taps$rows$ring$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$0$taps$rows$ring$line
-module top$lanes$0$taps$rows$ring$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$ring$line$one
-module top$lanes$0$taps$rows$ring$line$ptr(d,q,clock);
+endmodule // top$lanes$0$taps$rows$ring
+module top$lanes$0$taps$rows$ring$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1717,8 +1730,76 @@ module top$lanes$0$taps$rows$ring$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$ring$line$ptr
-module top$lanes$0$taps$rows$ring$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$0$taps$rows$ring$bound
+module top$lanes$0$taps$rows$ring$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$is_one
+module top$lanes$0$taps$rows$ring$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$is_short
+module top$lanes$0$taps$rows$ring$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$one
+module top$lanes$0$taps$rows$ring$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$ptr
+module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -1730,19 +1811,27 @@ module top$lanes$0$taps$rows$ring$line$ram(read_address,read_clock,read_data,wri
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[992:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [7:0] mem_0_0[992:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[9:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[9:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[9:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$0$taps$rows$ring$line$ram
-module top$lanes$0$taps$rows$ring$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {56'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$0$taps$rows$ring$ram
+module top$lanes$0$taps$rows$ring$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1758,25 +1847,8 @@ module top$lanes$0$taps$rows$ring$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$ring$line$rd_flipped
-module top$lanes$0$taps$rows$ring$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$taps$rows$ring$line_last
-module top$lanes$0$taps$rows$ring$out(d,q,clock);
+endmodule // top$lanes$0$taps$rows$ring$rd_flipped
+module top$lanes$0$taps$rows$ring$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -1792,7 +1864,7 @@ module top$lanes$0$taps$rows$ring$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$ring$out
+endmodule // top$lanes$0$taps$rows$ring$short
 module top$lanes$0$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -3879,75 +3951,9 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$1$taps$rows$beam0$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$1$taps$rows$beam0$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$1$taps$rows$beam0$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$1$taps$rows$beam0
-module top$lanes$1$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
     // Stub signals
@@ -3958,6 +3964,9 @@ module top$lanes$1$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -3967,13 +3976,22 @@ module top$lanes$1$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$1$taps$rows$beam0$line$ram ram(
+    top$lanes$1$taps$rows$beam0$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -3982,76 +4000,95 @@ module top$lanes$1$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$1$taps$rows$beam0$line$ptr ptr(
+    top$lanes$1$taps$rows$beam0$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$1$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$1$taps$rows$beam0$line$rd_flipped rd_flipped(
+    top$lanes$1$taps$rows$beam0$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$1$taps$rows$beam0$line$one one(
+    top$lanes$1$taps$rows$beam0$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$1$taps$rows$beam0$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$1$taps$rows$beam0$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$1$taps$rows$beam0$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$1$taps$rows$beam0$line
-module top$lanes$1$taps$rows$beam0$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$beam0$line$one
-module top$lanes$1$taps$rows$beam0$line$ptr(d,q,clock);
+endmodule // top$lanes$1$taps$rows$beam0
+module top$lanes$1$taps$rows$beam0$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4067,8 +4104,76 @@ module top$lanes$1$taps$rows$beam0$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam0$line$ptr
-module top$lanes$1$taps$rows$beam0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$taps$rows$beam0$bound
+module top$lanes$1$taps$rows$beam0$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$is_one
+module top$lanes$1$taps$rows$beam0$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$is_short
+module top$lanes$1$taps$rows$beam0$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$one
+module top$lanes$1$taps$rows$beam0$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$ptr
+module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -4080,20 +4185,28 @@ module top$lanes$1$taps$rows$beam0$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[14:0];
+    reg [7:0] mem_0_0[14:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[3:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[3:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[3:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[3:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$1$taps$rows$beam0$line$ram
-module top$lanes$1$taps$rows$beam0$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {56'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$1$taps$rows$beam0$ram
+module top$lanes$1$taps$rows$beam0$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4109,25 +4222,8 @@ module top$lanes$1$taps$rows$beam0$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam0$line$rd_flipped
-module top$lanes$1$taps$rows$beam0$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$beam0$line_last
-module top$lanes$1$taps$rows$beam0$out(d,q,clock);
+endmodule // top$lanes$1$taps$rows$beam0$rd_flipped
+module top$lanes$1$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -4143,7 +4239,7 @@ module top$lanes$1$taps$rows$beam0$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam0$out
+endmodule // top$lanes$1$taps$rows$beam0$short
 module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -4154,75 +4250,9 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$1$taps$rows$beam1$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$1$taps$rows$beam1$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$1$taps$rows$beam1$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$1$taps$rows$beam1
-module top$lanes$1$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
     // Stub signals
@@ -4233,6 +4263,9 @@ module top$lanes$1$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -4242,13 +4275,22 @@ module top$lanes$1$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$1$taps$rows$beam1$line$ram ram(
+    top$lanes$1$taps$rows$beam1$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -4257,76 +4299,95 @@ module top$lanes$1$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$1$taps$rows$beam1$line$ptr ptr(
+    top$lanes$1$taps$rows$beam1$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$1$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$1$taps$rows$beam1$line$rd_flipped rd_flipped(
+    top$lanes$1$taps$rows$beam1$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$1$taps$rows$beam1$line$one one(
+    top$lanes$1$taps$rows$beam1$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$1$taps$rows$beam1$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$1$taps$rows$beam1$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$1$taps$rows$beam1$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$1$taps$rows$beam1$line
-module top$lanes$1$taps$rows$beam1$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$beam1$line$one
-module top$lanes$1$taps$rows$beam1$line$ptr(d,q,clock);
+endmodule // top$lanes$1$taps$rows$beam1
+module top$lanes$1$taps$rows$beam1$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4342,8 +4403,76 @@ module top$lanes$1$taps$rows$beam1$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam1$line$ptr
-module top$lanes$1$taps$rows$beam1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$taps$rows$beam1$bound
+module top$lanes$1$taps$rows$beam1$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$is_one
+module top$lanes$1$taps$rows$beam1$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$is_short
+module top$lanes$1$taps$rows$beam1$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$one
+module top$lanes$1$taps$rows$beam1$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$ptr
+module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -4355,20 +4484,28 @@ module top$lanes$1$taps$rows$beam1$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[14:0];
+    reg [7:0] mem_0_0[14:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[3:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[3:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[3:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[3:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$1$taps$rows$beam1$line$ram
-module top$lanes$1$taps$rows$beam1$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {56'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$1$taps$rows$beam1$ram
+module top$lanes$1$taps$rows$beam1$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4384,25 +4521,8 @@ module top$lanes$1$taps$rows$beam1$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam1$line$rd_flipped
-module top$lanes$1$taps$rows$beam1$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$beam1$line_last
-module top$lanes$1$taps$rows$beam1$out(d,q,clock);
+endmodule // top$lanes$1$taps$rows$beam1$rd_flipped
+module top$lanes$1$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -4418,7 +4538,7 @@ module top$lanes$1$taps$rows$beam1$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam1$out
+endmodule // top$lanes$1$taps$rows$beam1$short
 module top$lanes$1$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -4446,75 +4566,9 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$1$taps$rows$ring$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$1$taps$rows$ring$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$1$taps$rows$ring$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$1$taps$rows$ring
-module top$lanes$1$taps$rows$ring$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e0;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
     // Stub signals
@@ -4525,6 +4579,9 @@ module top$lanes$1$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -4534,13 +4591,22 @@ module top$lanes$1$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$1$taps$rows$ring$line$ram ram(
+    top$lanes$1$taps$rows$ring$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -4549,76 +4615,95 @@ module top$lanes$1$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$1$taps$rows$ring$line$ptr ptr(
+    top$lanes$1$taps$rows$ring$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$1$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$1$taps$rows$ring$line$rd_flipped rd_flipped(
+    top$lanes$1$taps$rows$ring$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$1$taps$rows$ring$line$one one(
+    top$lanes$1$taps$rows$ring$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$1$taps$rows$ring$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$1$taps$rows$ring$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$1$taps$rows$ring$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$1$taps$rows$ring$line
-module top$lanes$1$taps$rows$ring$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$ring$line$one
-module top$lanes$1$taps$rows$ring$line$ptr(d,q,clock);
+endmodule // top$lanes$1$taps$rows$ring
+module top$lanes$1$taps$rows$ring$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4634,8 +4719,76 @@ module top$lanes$1$taps$rows$ring$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$ring$line$ptr
-module top$lanes$1$taps$rows$ring$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$1$taps$rows$ring$bound
+module top$lanes$1$taps$rows$ring$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$is_one
+module top$lanes$1$taps$rows$ring$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$is_short
+module top$lanes$1$taps$rows$ring$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$one
+module top$lanes$1$taps$rows$ring$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$ptr
+module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -4647,19 +4800,27 @@ module top$lanes$1$taps$rows$ring$line$ram(read_address,read_clock,read_data,wri
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[992:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [7:0] mem_0_0[992:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[9:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[9:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[9:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$1$taps$rows$ring$line$ram
-module top$lanes$1$taps$rows$ring$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {56'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$1$taps$rows$ring$ram
+module top$lanes$1$taps$rows$ring$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4675,25 +4836,8 @@ module top$lanes$1$taps$rows$ring$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$ring$line$rd_flipped
-module top$lanes$1$taps$rows$ring$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$taps$rows$ring$line_last
-module top$lanes$1$taps$rows$ring$out(d,q,clock);
+endmodule // top$lanes$1$taps$rows$ring$rd_flipped
+module top$lanes$1$taps$rows$ring$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -4709,7 +4853,7 @@ module top$lanes$1$taps$rows$ring$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$ring$out
+endmodule // top$lanes$1$taps$rows$ring$short
 module top$lanes$1$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -6796,75 +6940,9 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$2$taps$rows$beam0$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$2$taps$rows$beam0$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$2$taps$rows$beam0$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$2$taps$rows$beam0
-module top$lanes$2$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
     // Stub signals
@@ -6875,6 +6953,9 @@ module top$lanes$2$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -6884,13 +6965,22 @@ module top$lanes$2$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$2$taps$rows$beam0$line$ram ram(
+    top$lanes$2$taps$rows$beam0$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -6899,76 +6989,95 @@ module top$lanes$2$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$2$taps$rows$beam0$line$ptr ptr(
+    top$lanes$2$taps$rows$beam0$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$2$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$2$taps$rows$beam0$line$rd_flipped rd_flipped(
+    top$lanes$2$taps$rows$beam0$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$2$taps$rows$beam0$line$one one(
+    top$lanes$2$taps$rows$beam0$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$2$taps$rows$beam0$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$2$taps$rows$beam0$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$2$taps$rows$beam0$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$2$taps$rows$beam0$line
-module top$lanes$2$taps$rows$beam0$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$taps$rows$beam0$line$one
-module top$lanes$2$taps$rows$beam0$line$ptr(d,q,clock);
+endmodule // top$lanes$2$taps$rows$beam0
+module top$lanes$2$taps$rows$beam0$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6984,8 +7093,76 @@ module top$lanes$2$taps$rows$beam0$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam0$line$ptr
-module top$lanes$2$taps$rows$beam0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$taps$rows$beam0$bound
+module top$lanes$2$taps$rows$beam0$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam0$is_one
+module top$lanes$2$taps$rows$beam0$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam0$is_short
+module top$lanes$2$taps$rows$beam0$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam0$one
+module top$lanes$2$taps$rows$beam0$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam0$ptr
+module top$lanes$2$taps$rows$beam0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -6997,20 +7174,28 @@ module top$lanes$2$taps$rows$beam0$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[14:0];
+    reg [7:0] mem_0_0[14:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[3:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[3:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[3:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[3:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$2$taps$rows$beam0$line$ram
-module top$lanes$2$taps$rows$beam0$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {56'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$2$taps$rows$beam0$ram
+module top$lanes$2$taps$rows$beam0$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7026,25 +7211,8 @@ module top$lanes$2$taps$rows$beam0$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam0$line$rd_flipped
-module top$lanes$2$taps$rows$beam0$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$taps$rows$beam0$line_last
-module top$lanes$2$taps$rows$beam0$out(d,q,clock);
+endmodule // top$lanes$2$taps$rows$beam0$rd_flipped
+module top$lanes$2$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -7060,7 +7228,7 @@ module top$lanes$2$taps$rows$beam0$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam0$out
+endmodule // top$lanes$2$taps$rows$beam0$short
 module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7071,75 +7239,9 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$2$taps$rows$beam1$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$2$taps$rows$beam1$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$2$taps$rows$beam1$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$2$taps$rows$beam1
-module top$lanes$2$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
     // Stub signals
@@ -7150,6 +7252,9 @@ module top$lanes$2$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -7159,13 +7264,22 @@ module top$lanes$2$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$2$taps$rows$beam1$line$ram ram(
+    top$lanes$2$taps$rows$beam1$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -7174,76 +7288,95 @@ module top$lanes$2$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$2$taps$rows$beam1$line$ptr ptr(
+    top$lanes$2$taps$rows$beam1$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$2$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$2$taps$rows$beam1$line$rd_flipped rd_flipped(
+    top$lanes$2$taps$rows$beam1$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$2$taps$rows$beam1$line$one one(
+    top$lanes$2$taps$rows$beam1$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$2$taps$rows$beam1$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$2$taps$rows$beam1$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$2$taps$rows$beam1$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$2$taps$rows$beam1$line
-module top$lanes$2$taps$rows$beam1$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$taps$rows$beam1$line$one
-module top$lanes$2$taps$rows$beam1$line$ptr(d,q,clock);
+endmodule // top$lanes$2$taps$rows$beam1
+module top$lanes$2$taps$rows$beam1$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7259,8 +7392,76 @@ module top$lanes$2$taps$rows$beam1$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam1$line$ptr
-module top$lanes$2$taps$rows$beam1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$taps$rows$beam1$bound
+module top$lanes$2$taps$rows$beam1$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam1$is_one
+module top$lanes$2$taps$rows$beam1$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam1$is_short
+module top$lanes$2$taps$rows$beam1$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam1$one
+module top$lanes$2$taps$rows$beam1$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam1$ptr
+module top$lanes$2$taps$rows$beam1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -7272,20 +7473,28 @@ module top$lanes$2$taps$rows$beam1$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[14:0];
+    reg [7:0] mem_0_0[14:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[3:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[3:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[3:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[3:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$2$taps$rows$beam1$line$ram
-module top$lanes$2$taps$rows$beam1$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {56'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$2$taps$rows$beam1$ram
+module top$lanes$2$taps$rows$beam1$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7301,25 +7510,8 @@ module top$lanes$2$taps$rows$beam1$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam1$line$rd_flipped
-module top$lanes$2$taps$rows$beam1$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$taps$rows$beam1$line_last
-module top$lanes$2$taps$rows$beam1$out(d,q,clock);
+endmodule // top$lanes$2$taps$rows$beam1$rd_flipped
+module top$lanes$2$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -7335,7 +7527,7 @@ module top$lanes$2$taps$rows$beam1$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam1$out
+endmodule // top$lanes$2$taps$rows$beam1$short
 module top$lanes$2$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -7363,75 +7555,9 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$2$taps$rows$ring$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$2$taps$rows$ring$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$2$taps$rows$ring$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$2$taps$rows$ring
-module top$lanes$2$taps$rows$ring$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e0;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
     // Stub signals
@@ -7442,6 +7568,9 @@ module top$lanes$2$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -7451,13 +7580,22 @@ module top$lanes$2$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$2$taps$rows$ring$line$ram ram(
+    top$lanes$2$taps$rows$ring$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -7466,76 +7604,95 @@ module top$lanes$2$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$2$taps$rows$ring$line$ptr ptr(
+    top$lanes$2$taps$rows$ring$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$2$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$2$taps$rows$ring$line$rd_flipped rd_flipped(
+    top$lanes$2$taps$rows$ring$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$2$taps$rows$ring$line$one one(
+    top$lanes$2$taps$rows$ring$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$2$taps$rows$ring$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$2$taps$rows$ring$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$2$taps$rows$ring$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$2$taps$rows$ring$line
-module top$lanes$2$taps$rows$ring$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$taps$rows$ring$line$one
-module top$lanes$2$taps$rows$ring$line$ptr(d,q,clock);
+endmodule // top$lanes$2$taps$rows$ring
+module top$lanes$2$taps$rows$ring$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7551,8 +7708,76 @@ module top$lanes$2$taps$rows$ring$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$ring$line$ptr
-module top$lanes$2$taps$rows$ring$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$2$taps$rows$ring$bound
+module top$lanes$2$taps$rows$ring$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$ring$is_one
+module top$lanes$2$taps$rows$ring$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$ring$is_short
+module top$lanes$2$taps$rows$ring$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$ring$one
+module top$lanes$2$taps$rows$ring$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$ring$ptr
+module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -7564,19 +7789,27 @@ module top$lanes$2$taps$rows$ring$line$ram(read_address,read_clock,read_data,wri
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[992:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [7:0] mem_0_0[992:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[9:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[9:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[9:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$2$taps$rows$ring$line$ram
-module top$lanes$2$taps$rows$ring$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {56'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$2$taps$rows$ring$ram
+module top$lanes$2$taps$rows$ring$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7592,25 +7825,8 @@ module top$lanes$2$taps$rows$ring$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$ring$line$rd_flipped
-module top$lanes$2$taps$rows$ring$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$taps$rows$ring$line_last
-module top$lanes$2$taps$rows$ring$out(d,q,clock);
+endmodule // top$lanes$2$taps$rows$ring$rd_flipped
+module top$lanes$2$taps$rows$ring$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -7626,7 +7842,7 @@ module top$lanes$2$taps$rows$ring$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$ring$out
+endmodule // top$lanes$2$taps$rows$ring$short
 module top$lanes$2$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -9713,75 +9929,9 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$3$taps$rows$beam0$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$3$taps$rows$beam0$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$3$taps$rows$beam0$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$3$taps$rows$beam0
-module top$lanes$3$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
     // Stub signals
@@ -9792,6 +9942,9 @@ module top$lanes$3$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -9801,13 +9954,22 @@ module top$lanes$3$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$3$taps$rows$beam0$line$ram ram(
+    top$lanes$3$taps$rows$beam0$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -9816,76 +9978,95 @@ module top$lanes$3$taps$rows$beam0$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$3$taps$rows$beam0$line$ptr ptr(
+    top$lanes$3$taps$rows$beam0$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$3$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$3$taps$rows$beam0$line$rd_flipped rd_flipped(
+    top$lanes$3$taps$rows$beam0$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$3$taps$rows$beam0$line$one one(
+    top$lanes$3$taps$rows$beam0$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$3$taps$rows$beam0$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$3$taps$rows$beam0$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$3$taps$rows$beam0$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$3$taps$rows$beam0$line
-module top$lanes$3$taps$rows$beam0$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$taps$rows$beam0$line$one
-module top$lanes$3$taps$rows$beam0$line$ptr(d,q,clock);
+endmodule // top$lanes$3$taps$rows$beam0
+module top$lanes$3$taps$rows$beam0$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -9901,8 +10082,76 @@ module top$lanes$3$taps$rows$beam0$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam0$line$ptr
-module top$lanes$3$taps$rows$beam0$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$taps$rows$beam0$bound
+module top$lanes$3$taps$rows$beam0$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam0$is_one
+module top$lanes$3$taps$rows$beam0$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam0$is_short
+module top$lanes$3$taps$rows$beam0$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam0$one
+module top$lanes$3$taps$rows$beam0$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam0$ptr
+module top$lanes$3$taps$rows$beam0$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -9914,20 +10163,28 @@ module top$lanes$3$taps$rows$beam0$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[14:0];
+    reg [7:0] mem_0_0[14:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[3:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[3:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[3:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[3:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$3$taps$rows$beam0$line$ram
-module top$lanes$3$taps$rows$beam0$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {56'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$3$taps$rows$beam0$ram
+module top$lanes$3$taps$rows$beam0$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -9943,25 +10200,8 @@ module top$lanes$3$taps$rows$beam0$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam0$line$rd_flipped
-module top$lanes$3$taps$rows$beam0$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$taps$rows$beam0$line_last
-module top$lanes$3$taps$rows$beam0$out(d,q,clock);
+endmodule // top$lanes$3$taps$rows$beam0$rd_flipped
+module top$lanes$3$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -9977,7 +10217,7 @@ module top$lanes$3$taps$rows$beam0$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam0$out
+endmodule // top$lanes$3$taps$rows$beam0$short
 module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -9988,75 +10228,9 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$3$taps$rows$beam1$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$3$taps$rows$beam1$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$3$taps$rows$beam1$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$3$taps$rows$beam1
-module top$lanes$3$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
     // Stub signals
@@ -10067,6 +10241,9 @@ module top$lanes$3$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -10076,13 +10253,22 @@ module top$lanes$3$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$3$taps$rows$beam1$line$ram ram(
+    top$lanes$3$taps$rows$beam1$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -10091,76 +10277,95 @@ module top$lanes$3$taps$rows$beam1$line(clock,data_in,write_enable,data_out,last
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$3$taps$rows$beam1$line$ptr ptr(
+    top$lanes$3$taps$rows$beam1$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$3$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$3$taps$rows$beam1$line$rd_flipped rd_flipped(
+    top$lanes$3$taps$rows$beam1$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$3$taps$rows$beam1$line$one one(
+    top$lanes$3$taps$rows$beam1$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$3$taps$rows$beam1$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$3$taps$rows$beam1$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$3$taps$rows$beam1$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$3$taps$rows$beam1$line
-module top$lanes$3$taps$rows$beam1$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$taps$rows$beam1$line$one
-module top$lanes$3$taps$rows$beam1$line$ptr(d,q,clock);
+endmodule // top$lanes$3$taps$rows$beam1
+module top$lanes$3$taps$rows$beam1$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10176,8 +10381,76 @@ module top$lanes$3$taps$rows$beam1$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam1$line$ptr
-module top$lanes$3$taps$rows$beam1$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$taps$rows$beam1$bound
+module top$lanes$3$taps$rows$beam1$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam1$is_one
+module top$lanes$3$taps$rows$beam1$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam1$is_short
+module top$lanes$3$taps$rows$beam1$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam1$one
+module top$lanes$3$taps$rows$beam1$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam1$ptr
+module top$lanes$3$taps$rows$beam1$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -10189,20 +10462,28 @@ module top$lanes$3$taps$rows$beam1$line$ram(read_address,read_clock,read_data,wr
     input wire  write_enable;
     
     // Update code (custom)
+    wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem[14:0];
+    reg [7:0] mem_0_0[14:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[3:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[3:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[3:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[3:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$3$taps$rows$beam1$line$ram
-module top$lanes$3$taps$rows$beam1$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {56'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$3$taps$rows$beam1$ram
+module top$lanes$3$taps$rows$beam1$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10218,25 +10499,8 @@ module top$lanes$3$taps$rows$beam1$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam1$line$rd_flipped
-module top$lanes$3$taps$rows$beam1$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$taps$rows$beam1$line_last
-module top$lanes$3$taps$rows$beam1$out(d,q,clock);
+endmodule // top$lanes$3$taps$rows$beam1$rd_flipped
+module top$lanes$3$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -10252,7 +10516,7 @@ module top$lanes$3$taps$rows$beam1$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam1$out
+endmodule // top$lanes$3$taps$rows$beam1$short
 module top$lanes$3$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -10280,75 +10544,9 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  mask = 64'hff;
-    
-    // Stub signals
-    reg  line$clock;
-    reg  [63:0] line$data_in;
-    reg  line$write_enable;
-    wire  [63:0] line$data_out;
-    reg  [15:0] line$last;
-    reg  [15:0] line_last$d;
-    wire  [15:0] line_last$q;
-    reg  line_last$clock;
-    reg  [63:0] out$d;
-    wire  [63:0] out$q;
-    reg  out$clock;
-    
-    // Sub module instances
-    top$lanes$3$taps$rows$ring$line line(
-        .clock(line$clock),
-        .data_in(line$data_in),
-        .write_enable(line$write_enable),
-        .data_out(line$data_out),
-        .last(line$last)
-    );
-    top$lanes$3$taps$rows$ring$line_last line_last(
-        .d(line_last$d),
-        .q(line_last$q),
-        .clock(line_last$clock)
-    );
-    top$lanes$3$taps$rows$ring$out out(
-        .d(out$d),
-        .q(out$q),
-        .clock(out$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        line_last$clock = clock;
-        out$clock = clock;
-        line_last$d = line_last$q;
-        out$d = out$q;
-        line$clock = clock;
-        line_last$d = last - 'h1;
-        line$last = line_last$q;
-        line$data_in = data_in;
-        line$write_enable = write_enable;
-        out$d = line$data_out;
-        if (last == 'h0) begin
-            out$d = out$q;
-            if (write_enable) begin
-                out$d = data_in & mask;
-            end
-        end
-        data_out = out$q;
-    end
-    
-endmodule // top$lanes$3$taps$rows$ring
-module top$lanes$3$taps$rows$ring$line(clock,data_in,write_enable,data_out,last);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [63:0] data_in;
-    input wire  write_enable;
-    output reg  [63:0] data_out;
-    input wire  [15:0] last;
-    
-    // Constant declarations
     localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e0;
-    localparam  single = 1'b0;
+    localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
     // Stub signals
@@ -10359,6 +10557,9 @@ module top$lanes$3$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  ram$write_clock;
     reg  [63:0] ram$write_data;
     reg  ram$write_enable;
+    reg  [15:0] bound$d;
+    wire  [15:0] bound$q;
+    reg  bound$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
@@ -10368,13 +10569,22 @@ module top$lanes$3$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] short$d;
+    wire  [63:0] short$q;
+    reg  short$clock;
+    reg  is_short$d;
+    wire  is_short$q;
+    reg  is_short$clock;
+    reg  is_one$d;
+    wire  is_one$q;
+    reg  is_one$clock;
     
     // Local signals
     reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
-    top$lanes$3$taps$rows$ring$line$ram ram(
+    top$lanes$3$taps$rows$ring$ram ram(
         .read_address(ram$read_address),
         .read_clock(ram$read_clock),
         .read_data(ram$read_data),
@@ -10383,76 +10593,95 @@ module top$lanes$3$taps$rows$ring$line(clock,data_in,write_enable,data_out,last)
         .write_data(ram$write_data),
         .write_enable(ram$write_enable)
     );
-    top$lanes$3$taps$rows$ring$line$ptr ptr(
+    top$lanes$3$taps$rows$ring$bound bound(
+        .d(bound$d),
+        .q(bound$q),
+        .clock(bound$clock)
+    );
+    top$lanes$3$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
     );
-    top$lanes$3$taps$rows$ring$line$rd_flipped rd_flipped(
+    top$lanes$3$taps$rows$ring$rd_flipped rd_flipped(
         .d(rd_flipped$d),
         .q(rd_flipped$q),
         .clock(rd_flipped$clock)
     );
-    top$lanes$3$taps$rows$ring$line$one one(
+    top$lanes$3$taps$rows$ring$one one(
         .d(one$d),
         .q(one$q),
         .clock(one$clock)
+    );
+    top$lanes$3$taps$rows$ring$short short(
+        .d(short$d),
+        .q(short$q),
+        .clock(short$clock)
+    );
+    top$lanes$3$taps$rows$ring$is_short is_short(
+        .d(is_short$d),
+        .q(is_short$q),
+        .clock(is_short$clock)
+    );
+    top$lanes$3$taps$rows$ring$is_one is_one(
+        .d(is_one$d),
+        .q(is_one$q),
+        .clock(is_one$clock)
     );
     
     // Update code
     reg  [63:0] data_out_pass;
     always @(*) begin
+        bound$clock = clock;
         ptr$clock = clock;
         rd_flipped$clock = clock;
         one$clock = clock;
+        short$clock = clock;
+        is_short$clock = clock;
+        is_one$clock = clock;
+        bound$d = bound$q;
         ptr$d = ptr$q;
         rd_flipped$d = rd_flipped$q;
         one$d = one$q;
+        short$d = short$q;
+        is_short$d = is_short$q;
+        is_one$d = is_one$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
+        bound$d = last - 'h1;
+        is_short$d = last < 'h2;
+        is_one$d = last == 'h0;
         rd = rd_flipped$q ^ flip;
         next = rd + 'h1;
-        if ((rd >= last) | (rd >= longest_last)) begin
+        if ((rd >= bound$q) | (rd >= longest_last)) begin
             next = 'h0;
         end
         rd_flipped$d = next ^ flip;
         ptr$d = rd;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
-        ram$write_enable = write_enable & ~single;
+        ram$write_enable = write_enable & has_ring;
         ram$read_address = rd;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        if (single | (last == 'h0)) begin
-            data_out_pass = one$q;
+        short$d = one$q;
+        if (is_one$q) begin
+            short$d = short$q;
+            if (write_enable) begin
+                short$d = data_in & mask;
+            end
         end
-        else begin
-            data_out_pass = ram$read_data;
+        data_out_pass = ram$read_data;
+        if (is_short$q | ~has_ring) begin
+            data_out_pass = short$q;
         end
         data_out = data_out_pass;
     end
     
-endmodule // top$lanes$3$taps$rows$ring$line
-module top$lanes$3$taps$rows$ring$line$one(d,q,clock);
-    
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$taps$rows$ring$line$one
-module top$lanes$3$taps$rows$ring$line$ptr(d,q,clock);
+endmodule // top$lanes$3$taps$rows$ring
+module top$lanes$3$taps$rows$ring$bound(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10468,8 +10697,76 @@ module top$lanes$3$taps$rows$ring$line$ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$ring$line$ptr
-module top$lanes$3$taps$rows$ring$line$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+endmodule // top$lanes$3$taps$rows$ring$bound
+module top$lanes$3$taps$rows$ring$is_one(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$ring$is_one
+module top$lanes$3$taps$rows$ring$is_short(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$ring$is_short
+module top$lanes$3$taps$rows$ring$one(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$ring$one
+module top$lanes$3$taps$rows$ring$ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$ring$ptr
+module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
     // Module arguments
     input wire  [15:0] read_address;
@@ -10481,19 +10778,27 @@ module top$lanes$3$taps$rows$ring$line$ram(read_address,read_clock,read_data,wri
     input wire  write_enable;
     
     // Update code (custom)
-    reg [7:0] mem[992:0];
+    wire [7:0] stored_word = {write_data[7:0]};
+    reg [7:0] mem_0_0[992:0];
+    reg [7:0] rd_0;
+    reg [7:0] q_0;
     
     always @(posedge read_clock) begin
-       read_data <= {56'd0, mem[read_address[9:0]][7:0]};
+       rd_0[7:0] <= mem_0_0[read_address[9:0]];
+       q_0 <= rd_0;
     end
     
     always @(posedge write_clock) begin
        if (write_enable) begin
-          mem[write_address[9:0]] <= {write_data[7:0]};
+          mem_0_0[write_address[9:0]] <= stored_word[7:0];
        end
     end
-endmodule // top$lanes$3$taps$rows$ring$line$ram
-module top$lanes$3$taps$rows$ring$line$rd_flipped(d,q,clock);
+    
+    always @(*) begin
+       read_data = {56'd0, q_0[7:0]};
+    end
+endmodule // top$lanes$3$taps$rows$ring$ram
+module top$lanes$3$taps$rows$ring$rd_flipped(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10509,25 +10814,8 @@ module top$lanes$3$taps$rows$ring$line$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$ring$line$rd_flipped
-module top$lanes$3$taps$rows$ring$line_last(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$taps$rows$ring$line_last
-module top$lanes$3$taps$rows$ring$out(d,q,clock);
+endmodule // top$lanes$3$taps$rows$ring$rd_flipped
+module top$lanes$3$taps$rows$ring$short(d,q,clock);
     
     // Module arguments
     input wire  [63:0] d;
@@ -10543,7 +10831,7 @@ module top$lanes$3$taps$rows$ring$out(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$ring$out
+endmodule // top$lanes$3$taps$rows$ring$short
 module top$lanes$3$taps$rows$ring_last(d,q,clock);
     
     // Module arguments

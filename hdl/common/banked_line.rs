@@ -1,0 +1,243 @@
+//! A [`DelayLine`] read through a register at each of its block RAMs (the
+//! beam- and slice-length delays of §3.5-3.7 and Fig. 21's SFG, as Cube-4L's
+//! compositing buffer and gradient unit keep them). Each bank of the line's
+//! memory ([`DepthRam::bank_registers`]) ends in a flip-flop that can sit
+//! beside its block RAM, and the bank is chosen after those flip-flops. A
+//! [`super::registered_line::RegisteredLine`] ends in one register after
+//! the memory's depth selection instead, so the block RAMs' read data must
+//! cross the part to reach it: an ECP5 DP16KD's clock-to-out (about 4.3 ns
+//! without its output register) and that routing (about 5 ns) were the
+//! 256³ builds' critical path, at 101 MHz.
+//!
+//! A delay of L >= 3 is a ring of L - 1 words whose read takes two clocks,
+//! so the same L clocks at the same memory as a `RegisteredLine`. Its
+//! pointers are a [`DelayLine`]'s: the read pointer a register of its own,
+//! one step ahead of the write pointer, so that the memory's read address
+//! comes straight from a flip-flop. The lengths 1 and 2 are a register,
+//! `short`, fed from `data_in` or from a register before it. With a gap in
+//! `write_enable` the output at t is still `data_in` of t - L whenever
+//! clock t - L wrote, as in a `RegisteredLine`.
+//!
+//! The pointer's bound `L - 2` and the flag for the short lengths come from
+//! registers, one clock after `last` (the users' `last` is a register the
+//! view's `Beats` set between sweeps). Only that flag selects after the
+//! banks' registers, where a `DelayLine`'s own length-1 selection would add
+//! its compare of `last` (yosys merges the lanes' equal `last` registers,
+//! so that compare's inputs come from across the part).
+//!
+//! [`DepthRam::bank_registers`]: super::ram::DepthRam::bank_registers
+//! [`DelayLine`]: super::delay_line::DelayLine
+
+use super::ram::DepthRam;
+use rust_hdl::prelude::*;
+
+/// A delay of up to `longest` clocks with an `N`-bit pointer, read through
+/// a register at each block RAM.
+#[derive(LogicBlock)]
+pub struct BankedLine<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> {
+    pub clock: Signal<In, Clock>,
+    pub data_in: Signal<In, D>,
+    pub write_enable: Signal<In, Bit>,
+    pub data_out: Signal<Out, D>,
+    /// The delay less one, at most the longest less one.
+    pub last: Signal<In, Bits<N>>,
+    ram: DepthRam<D, N>,
+    /// The ring's last slot, `last - 1`.
+    bound: DFF<Bits<N>>,
+    /// The write pointer, and the read pointer (one step ahead) held as
+    /// `rd ^ 1`, so that from the all-zero start it reads slot 1 while
+    /// slot 0 is written.
+    ptr: DFF<Bits<N>>,
+    rd_flipped: DFF<Bits<N>>,
+    rd: Signal<Local, Bits<N>>,
+    next: Signal<Local, Bits<N>>,
+    flip: Constant<Bits<N>>,
+    /// The built ring's last slot: the pointer's bound.
+    longest_last: Constant<Bits<N>>,
+    /// Built for 3 or more (a line built for 2 or less is `short` alone).
+    has_ring: Constant<Bit>,
+    /// The delays of 1 and 2: `short` takes `data_in` (1) or `one`, the
+    /// last word written (2); `is_short` and `is_one` say which `last` asks
+    /// for.
+    one: DFF<D>,
+    short: DFF<D>,
+    is_short: DFF<Bit>,
+    is_one: DFF<Bit>,
+    mask: Constant<D>,
+}
+
+impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> BankedLine<D, N> {
+    /// A delay of up to `longest` clocks (1 <= longest < 2^N) storing
+    /// `fields` of each word, as [`super::delay_line::DelayLine::new`].
+    pub fn new(longest: usize, fields: &[(usize, usize)], mask: D) -> Self {
+        assert!(
+            longest >= 1 && longest < 1 << N,
+            "a delay line with an {N}-bit pointer is 1 to 2^{N} - 1 clocks long, not {longest}"
+        );
+        // A ring of L - 1 words; a line built for 2 or less needs none (a
+        // 2-word stub).
+        let words = (longest.max(3) - 1).max(2);
+        BankedLine {
+            clock: Default::default(),
+            data_in: Default::default(),
+            write_enable: Default::default(),
+            data_out: Default::default(),
+            last: Default::default(),
+            ram: DepthRam::with_words(words)
+                .fields(fields, mask)
+                .bank_registers(),
+            bound: Default::default(),
+            ptr: Default::default(),
+            rd_flipped: Default::default(),
+            rd: Default::default(),
+            next: Default::default(),
+            flip: Constant::new(1u64.to_bits()),
+            longest_last: Constant::new(((words - 1) as u64).to_bits()),
+            has_ring: Constant::new(longest >= 3),
+            one: Default::default(),
+            short: Default::default(),
+            is_short: Default::default(),
+            is_one: Default::default(),
+            mask: Constant::new(mask),
+        }
+    }
+
+    /// Bits of storage in memory (the registers not counted).
+    pub fn memory_bits(&self) -> usize {
+        if !self.has_ring.val() {
+            0
+        } else {
+            self.ram.depth() * self.ram.word_bits()
+        }
+    }
+}
+
+impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> Logic for BankedLine<D, N> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, bound, ptr, rd_flipped, one, short, is_short, is_one);
+        self.ram.read_clock.next = self.clock.val();
+        self.ram.write_clock.next = self.clock.val();
+        self.bound.d.next = self.last.val() - 1;
+        self.is_short.d.next = self.last.val() < 2;
+        self.is_one.d.next = self.last.val() == 0;
+        // The ring: a read pointer one step ahead of the write pointer.
+        self.rd.next = self.rd_flipped.q.val() ^ self.flip.val();
+        self.next.next = self.rd.val() + 1;
+        if (self.rd.val() >= self.bound.q.val()) | (self.rd.val() >= self.longest_last.val()) {
+            self.next.next = 0.into();
+        }
+        self.rd_flipped.d.next = self.next.val() ^ self.flip.val();
+        self.ptr.d.next = self.rd.val();
+        self.ram.write_address.next = self.ptr.q.val();
+        self.ram.write_data.next = self.data_in.val();
+        self.ram.write_enable.next = self.write_enable.val() & self.has_ring.val();
+        self.ram.read_address.next = self.rd.val();
+        // The short lengths.
+        self.one.d.next = self.one.q.val();
+        if self.write_enable.val() {
+            self.one.d.next = self.data_in.val() & self.mask.val();
+        }
+        self.short.d.next = self.one.q.val();
+        if self.is_one.q.val() {
+            self.short.d.next = self.short.q.val();
+            if self.write_enable.val() {
+                self.short.d.next = self.data_in.val() & self.mask.val();
+            }
+        }
+        self.data_out.next = self.ram.read_data.val();
+        if self.is_short.q.val() | !self.has_ring.val() {
+            self.data_out.next = self.short.q.val();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[derive(LogicBlock)]
+    struct Bench {
+        clock: Signal<In, Clock>,
+        data_in: Signal<In, Bits<16>>,
+        write_enable: Signal<In, Bit>,
+        last: Signal<In, Bits<16>>,
+        data_out: Signal<Out, Bits<16>>,
+        line: BankedLine<Bits<16>, 16>,
+    }
+
+    impl Logic for Bench {
+        #[hdl_gen]
+        fn update(&mut self) {
+            self.line.clock.next = self.clock.val();
+            self.line.last.next = self.last.val();
+            self.line.data_in.next = self.data_in.val();
+            self.line.write_enable.next = self.write_enable.val();
+            self.data_out.next = self.line.data_out.val();
+        }
+    }
+
+    /// Drive a pseudo-random stream with gaps in `write_enable` into a line
+    /// built for `longest` and set to `length`: from the third clock on
+    /// (the inner length's register), every output whose clock t - length
+    /// wrote is that word.
+    fn check(longest: usize, length: usize) {
+        let mut uut = Bench {
+            clock: Default::default(),
+            data_in: Default::default(),
+            write_enable: Default::default(),
+            last: Default::default(),
+            data_out: Default::default(),
+            line: BankedLine::new(longest, &[(0, 12)], 0x0fffu64.to_bits()),
+        };
+        uut.connect_all();
+        let clocks = length + 200;
+        let mut sim = Simulation::new();
+        sim.add_clock(5, |x: &mut Box<Bench>| x.clock.next = !x.clock.val());
+        sim.add_testbench(move |mut sim: Sim<Bench>| {
+            let mut x = sim.init()?;
+            let mut written = Vec::new();
+            let mut state = 12345u64;
+            let mut checked = 0;
+            for t in 0..clocks {
+                state = state.wrapping_mul(6364136223846793005).wrapping_add(1);
+                let word = (state >> 20) & 0xffff;
+                let we = t % 7 != 3;
+                x.data_in.next = word.to_bits();
+                x.write_enable.next = we;
+                x.last.next = ((length - 1) as u64).to_bits();
+                x = sim.wait(10, x)?;
+                written.push(we.then_some(word & 0x0fff));
+                // After clock t: the word of clock t + 1 - length.
+                if t + 1 >= length + 2 {
+                    if let Some(expect) = written[t + 1 - length] {
+                        sim_assert_eq!(sim, x.data_out.val(), expect.to_bits::<16>(), x);
+                        checked += 1;
+                    }
+                }
+            }
+            sim_assert!(sim, checked > 120, x);
+            sim.done(x)
+        });
+        sim.run(Box::new(uut), 10 * clocks as u64 + 100).unwrap();
+    }
+
+    #[test]
+    fn output_is_the_input_length_clocks_back() {
+        for length in [1, 2, 3, 4, 7, 33] {
+            check(length, length);
+        }
+        // Lines built longer, set shorter at run time.
+        for (longest, length) in [(2, 1), (3, 1), (3, 2), (7, 1), (7, 2), (7, 3), (33, 20)] {
+            check(longest, length);
+        }
+    }
+
+    /// A line deeper than one bank (16384 words): the bank chosen after
+    /// the banks' registers.
+    #[test]
+    fn lines_of_several_banks() {
+        check(20_000, 20_000);
+        check(20_000, 16_385);
+    }
+}
