@@ -1,6 +1,7 @@
 //! What both architectures build from: [`lerp`] (linear interpolation),
 //! [`over`] (the over operator, fused for the RPC's one-clock loop), the
-//! pipelined [`piped_mul`] (the exact unorm multiplier) and [`piped_over`],
+//! pipelined [`piped_mul`] (the exact unorm multiplier; [`split_mul`], its
+//! product's clock cut in two) and [`piped_over`],
 //! [`delay_line`] (and [`registered_line`], its output a register, and
 //! [`banked_line`], a register at each block RAM), [`ram`] (block RAM as
 //! deep as the scene needs) and
@@ -26,6 +27,7 @@ pub mod ram;
 pub mod registered_line;
 pub mod regs;
 pub mod shader;
+pub mod split_mul;
 pub mod square;
 pub mod table;
 pub mod view_rom;

@@ -134,8 +134,15 @@ pub struct Cfb<const P: usize, const A: usize> {
     nb_q: DFF<Bits<16>>,
     z0: Signal<Local, Bits<16>>,
     z1: Signal<Local, Bits<16>>,
-    ny_last: Signal<Local, Bits<16>>,
-    b_last: Signal<Local, Bits<16>>,
+    /// The inner counts' spans, registered from the view registers for the
+    /// wraps' reloads, and each counter's steps left before it wraps: the
+    /// wrap tests a counter's own register against zero, not an up-counter
+    /// against a view register shared (and merged by synthesis) across lanes.
+    ny_last: DFF<Bits<16>>,
+    b_last: DFF<Bits<16>>,
+    nb_left: DFF<Bits<16>>,
+    nbeam_left: DFF<Bits<16>>,
+    ns_left: DFF<Bits<16>>,
 }
 
 impl<const P: usize, const A: usize> Cfb<P, A> {
@@ -222,6 +229,9 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
             z1: Default::default(),
             ny_last: Default::default(),
             b_last: Default::default(),
+            nb_left: Default::default(),
+            nbeam_left: Default::default(),
+            ns_left: Default::default(),
         }
     }
 }
@@ -232,7 +242,7 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
         dff_setup!(
             self, clock, running, ns_c, nbeam_c, nb_c, valid_q, ns_q, nbeam_q, nb_q, run_d1,
             run_d2, run_d3, run_d4, ns_d1, ns_d2, ns_d3, ns_d4, nbeam_d1, nbeam_d2, nbeam_d3,
-            nbeam_d4, nb_d1, nb_d2, nb_d3, nb_d4
+            nbeam_d4, nb_d1, nb_d2, nb_d3, nb_d4, ny_last, b_last, nb_left, nbeam_left, ns_left
         );
         self.lead.clock.next = self.clock.val();
         self.lead.reset.next = self.reset.val();
@@ -269,8 +279,8 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
         // The slices streamed, the last beam, the last partial beam.
         self.z0.next = self.slices.val().get_bits::<16>(32);
         self.z1.next = self.slices.val().get_bits::<16>(48);
-        self.ny_last.next = self.dims.val().get_bits::<16>(16) - 1;
-        self.b_last.next = self.beats.val().get_bits::<16>(32) - 1;
+        self.ny_last.d.next = self.dims.val().get_bits::<16>(16) - 1;
+        self.b_last.d.next = self.beats.val().get_bits::<16>(32) - 1;
         for k in 0..P {
             self.lanes[k].clock.next = self.clock.val();
             self.lanes[k].dims.next = self.dims.val();
@@ -322,18 +332,28 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
             self.ns_c.d.next = self.z0.val();
             self.nbeam_c.d.next = 0.into();
             self.nb_c.d.next = 0.into();
+            // The view is valid from this clock; its registered spans from
+            // the next, in time for the first wrap.
+            self.nb_left.d.next = self.beats.val().get_bits::<16>(32) - 1;
+            self.nbeam_left.d.next = self.dims.val().get_bits::<16>(16) - 1;
+            self.ns_left.d.next = self.z1.val() - self.z0.val();
         }
         if self.running.q.val() {
-            if self.nb_c.q.val() != self.b_last.val() {
+            if self.nb_left.q.val() != 0 {
                 self.nb_c.d.next = self.nb_c.q.val() + 1;
+                self.nb_left.d.next = self.nb_left.q.val() - 1;
             } else {
                 self.nb_c.d.next = 0.into();
-                if self.nbeam_c.q.val() != self.ny_last.val() {
+                self.nb_left.d.next = self.b_last.q.val();
+                if self.nbeam_left.q.val() != 0 {
                     self.nbeam_c.d.next = self.nbeam_c.q.val() + 1;
+                    self.nbeam_left.d.next = self.nbeam_left.q.val() - 1;
                 } else {
                     self.nbeam_c.d.next = 0.into();
-                    if self.ns_c.q.val() != self.z1.val() {
+                    self.nbeam_left.d.next = self.ny_last.q.val();
+                    if self.ns_left.q.val() != 0 {
                         self.ns_c.d.next = self.ns_c.q.val() + 1;
+                        self.ns_left.d.next = self.ns_left.q.val() - 1;
                     } else {
                         self.running.d.next = false;
                     }

@@ -14,8 +14,8 @@
 //! from the `Order` register, bits 0 and 1. The over operator is
 //! [`PipedOver`], one 16x16 multiplier per channel with a clock to itself:
 //! stage 1 the operands' selection and the weight `M - A_front` (the scalar
-//! modes' result), stage 2 the product, stage 3 the rounding, sum and
-//! saturation.
+//! modes' result), stage 2 the product, stage 3 its rounding half, stage 4
+//! the rounding, sum and saturation.
 
 use crate::common::mode_class::ModeClass;
 use crate::common::piped_over::{self, PipedOver};
@@ -52,9 +52,10 @@ pub struct Compositor {
     ch_g: PipedOver,
     ch_b: PipedOver,
     ch_a: PipedOver,
-    /// Stage 1: the scalar modes' result, and its stage 2.
+    /// Stage 1: the scalar modes' result, and its stages 2 and 3.
     scalar_q: DFF<Bits<32>>,
     scalar_qq: DFF<Bits<32>>,
+    scalar_qqq: DFF<Bits<32>>,
     reg_r: DFF<Bits<32>>,
     reg_g: DFF<Bits<16>>,
     reg_b: DFF<Bits<16>>,
@@ -87,6 +88,7 @@ impl Compositor {
             ch_a: PipedOver::new(rgba_bits),
             scalar_q: Default::default(),
             scalar_qq: Default::default(),
+            scalar_qqq: Default::default(),
             reg_r: Default::default(),
             reg_g: Default::default(),
             reg_b: Default::default(),
@@ -98,7 +100,7 @@ impl Compositor {
 impl Logic for Compositor {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, scalar_q, scalar_qq, reg_r, reg_g, reg_b, reg_a);
+        dff_setup!(self, clock, scalar_q, scalar_qq, scalar_qqq, reg_r, reg_g, reg_b, reg_a);
         self.ch_r.clock.next = self.clock.val();
         self.ch_g.clock.next = self.clock.val();
         self.ch_b.clock.next = self.clock.val();
@@ -144,9 +146,10 @@ impl Logic for Compositor {
         } else {
             self.scalar_q.d.next = self.acc_r.val() + self.new_r.val();
         }
-        // Stages 2 and 3.
+        // Stages 2 to 4.
         self.scalar_qq.d.next = self.scalar_q.q.val();
-        self.reg_r.d.next = self.scalar_qq.q.val();
+        self.scalar_qqq.d.next = self.scalar_qq.q.val();
+        self.reg_r.d.next = self.scalar_qqq.q.val();
         self.reg_g.d.next = 0.into();
         self.reg_b.d.next = 0.into();
         self.reg_a.d.next = 0.into();

@@ -1,7 +1,7 @@
 //! The control delay line of a Cube-4L pipeline (§3.5-3.7, Fig. 18): a
 //! beat's control travels beside its voxel, from the shader's input to the
 //! taps, the 2x2 selection and the bilinear unit (the gather, T) and on to
-//! the compositor's result (T+L+3, L the bilinear unit's latency), where it
+//! the compositor's result (T+L+4, L the bilinear unit's latency), where it
 //! marks the result and, on ER, makes it a base-plane pixel.
 //!
 //! The shader takes `shader::LATENCY` clocks, so its input is `T - 1 -
@@ -16,9 +16,9 @@ use rust_hdl::prelude::*;
 const GATHER: usize = 1 + GATHER_DELAY;
 const RESULT: usize = GATHER + LATENCY + super::compositor::LATENCY;
 // `hdl_gen` needs literal loop bounds and indices: the update below is
-// written for a gather 8 clocks and a result 18 clocks after the input.
+// written for a gather 8 clocks and a result 19 clocks after the input.
 const _: () = assert!(
-    GATHER == 8 && RESULT == 18,
+    GATHER == 8 && RESULT == 19,
     "update the literals in ControlDelay::update"
 );
 
@@ -53,7 +53,7 @@ pub struct ControlDelay {
     /// slice, compared a clock ahead and registered for the 2x2 selection.
     pub x_out_t: Signal<Out, Bit>,
     pub y_out_t: Signal<Out, Bit>,
-    /// At T+L+3, beside the composited value: a beat, one that is not
+    /// At T+L+4, beside the composited value: a beat, one that is not
     /// padding, and the base-plane pixel on ER.
     pub res_beat: Signal<Out, Bit>,
     pub res_valid: Signal<Out, Bit>,
@@ -96,7 +96,7 @@ impl Logic for ControlDelay {
             self.dyn_q[i].clock.next = self.clock.val();
             self.dym_q[i].clock.next = self.clock.val();
         }
-        for i in 0..18 {
+        for i in 0..19 {
             self.v_q[i].clock.next = self.clock.val();
             self.er_q[i].clock.next = self.clock.val();
             self.pad_q[i].clock.next = self.clock.val();
@@ -160,7 +160,7 @@ impl Logic for ControlDelay {
         self.bx_q[0].d.next = self.base_x.val();
         self.by_q[0].d.next = self.base_y.val();
         self.face_q[0].d.next = self.face.val();
-        for i in 1..18 {
+        for i in 1..19 {
             self.v_q[i].d.next = self.v_q[i - 1].q.val();
             self.er_q[i].d.next = self.er_q[i - 1].q.val();
             self.pad_q[i].d.next = self.pad_q[i - 1].q.val();
@@ -168,11 +168,11 @@ impl Logic for ControlDelay {
             self.by_q[i].d.next = self.by_q[i - 1].q.val();
             self.face_q[i].d.next = self.face_q[i - 1].q.val();
         }
-        self.res_beat.next = self.v_q[17].q.val();
-        self.res_valid.next = self.v_q[17].q.val() & !self.pad_q[17].q.val();
-        self.px_valid.next = self.v_q[17].q.val() & self.er_q[17].q.val() & !self.pad_q[17].q.val();
-        self.px_x.next = self.bx_q[17].q.val();
-        self.px_y.next = self.by_q[17].q.val();
-        self.px_face.next = self.face_q[17].q.val();
+        self.res_beat.next = self.v_q[18].q.val();
+        self.res_valid.next = self.v_q[18].q.val() & !self.pad_q[18].q.val();
+        self.px_valid.next = self.v_q[18].q.val() & self.er_q[18].q.val() & !self.pad_q[18].q.val();
+        self.px_x.next = self.bx_q[18].q.val();
+        self.px_y.next = self.by_q[18].q.val();
+        self.px_face.next = self.face_q[18].q.val();
     }
 }

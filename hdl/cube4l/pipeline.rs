@@ -24,9 +24,9 @@
 //! unit's a slice later; G = `GATHER_DELAY`), gather at T, the bilinear unit
 //! T..T+L (`bilinear::LATENCY`, pipelined for speed), the shader's sample at
 //! T+L (`shader::LATENCY` after its input), the compositor's registers at
-//! T+L+1 to T+L+3 (`config::RESULT_AT`), where the result enters the lane's
+//! T+L+1 to T+L+4 (`config::RESULT_AT`), where the result enters the lane's
 //! history and, on ER, goes out as a base-plane pixel. The history's ring
-//! needs at least one word: (n_y - 1) * b >= L + 8.
+//! needs at least one word: (n_y - 1) * b >= L + 9.
 //!
 //! **Lane.** [`PipeLane`] wires its blocks in this order: the input
 //! selection ([`LaneFeed`], which holds the ABC gradient unit), the shader,

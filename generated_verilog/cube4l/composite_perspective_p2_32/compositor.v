@@ -48,6 +48,9 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     reg  [31:0] scalar_qq$d;
     wire  [31:0] scalar_qq$q;
     reg  scalar_qq$clock;
+    reg  [31:0] scalar_qqq$d;
+    wire  [31:0] scalar_qqq$q;
+    reg  scalar_qqq$clock;
     reg  [31:0] reg_r$d;
     wire  [31:0] reg_r$q;
     reg  reg_r$clock;
@@ -100,6 +103,11 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
         .q(scalar_qq$q),
         .clock(scalar_qq$clock)
     );
+    top$lanes$0$compositor$scalar_qqq scalar_qqq(
+        .d(scalar_qqq$d),
+        .q(scalar_qqq$q),
+        .clock(scalar_qqq$clock)
+    );
     top$lanes$0$compositor$reg_r reg_r(
         .d(reg_r$d),
         .q(reg_r$q),
@@ -125,12 +133,14 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     always @(*) begin
         scalar_q$clock = clock;
         scalar_qq$clock = clock;
+        scalar_qqq$clock = clock;
         reg_r$clock = clock;
         reg_g$clock = clock;
         reg_b$clock = clock;
         reg_a$clock = clock;
         scalar_q$d = scalar_q$q;
         scalar_qq$d = scalar_qq$q;
+        scalar_qqq$d = scalar_qqq$q;
         reg_r$d = reg_r$q;
         reg_g$d = reg_g$q;
         reg_b$d = reg_b$q;
@@ -182,7 +192,8 @@ module top$lanes$0$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
             scalar_q$d = acc_r + new_r;
         end
         scalar_qq$d = scalar_q$q;
-        reg_r$d = scalar_qq$q;
+        scalar_qqq$d = scalar_qq$q;
+        reg_r$d = scalar_qqq$q;
         reg_g$d = 'h0;
         reg_b$d = 'h0;
         reg_a$d = 'h0;
@@ -228,6 +239,9 @@ module top$lanes$0$compositor$ch_a(clock,front,back,front_alpha,result);
     reg  [15:0] front_qq$d;
     wire  [15:0] front_qq$q;
     reg  front_qq$clock;
+    reg  [15:0] front_qqq$d;
+    wire  [15:0] front_qqq$q;
+    reg  front_qqq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -259,6 +273,11 @@ module top$lanes$0$compositor$ch_a(clock,front,back,front_alpha,result);
         .q(front_qq$q),
         .clock(front_qq$clock)
     );
+    top$lanes$0$compositor$ch_a$front_qqq front_qqq(
+        .d(front_qqq$d),
+        .q(front_qqq$q),
+        .clock(front_qqq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
@@ -267,10 +286,12 @@ module top$lanes$0$compositor$ch_a(clock,front,back,front_alpha,result);
         back_q$clock = clock;
         front_q$clock = clock;
         front_qq$clock = clock;
+        front_qqq$clock = clock;
         weight_q$d = weight_q$q;
         back_q$d = back_q$q;
         front_q$d = front_q$q;
         front_qq$d = front_qq$q;
+        front_qqq$d = front_qqq$q;
         weight_q$d = m - front_alpha;
         back_q$d = back;
         front_q$d = front;
@@ -278,7 +299,8 @@ module top$lanes$0$compositor$ch_a(clock,front,back,front_alpha,result);
         mul$a = weight_q$q;
         mul$b = back_q$q;
         front_qq$d = front_q$q;
-        sum = 32'(front_qq$q) + 32'(mul$y);
+        front_qqq$d = front_qq$q;
+        sum = 32'(front_qqq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -338,6 +360,23 @@ module top$lanes$0$compositor$ch_a$front_qq(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$ch_a$front_qq
+module top$lanes$0$compositor$ch_a$front_qqq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_a$front_qqq
 module top$lanes$0$compositor$ch_a$mul(clock,a,b,y);
     
     // Module arguments
@@ -349,14 +388,21 @@ module top$lanes$0$compositor$ch_a$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$0$compositor$ch_a$mul$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$0$compositor$ch_a$mul$t t(
         .d(t$d),
         .q(t$q),
@@ -364,19 +410,34 @@ module top$lanes$0$compositor$ch_a$mul(clock,a,b,y);
     );
     
     // Update code
-    reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
+        p$d = a * b;
+        t$d = p$q + half;
+        y = 16'((t$q + (t$q >> shift)) >> shift);
     end
     
 endmodule // top$lanes$0$compositor$ch_a$mul
+module top$lanes$0$compositor$ch_a$mul$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_a$mul$p
 module top$lanes$0$compositor$ch_a$mul$t(d,q,clock);
     
     // Module arguments
@@ -440,6 +501,9 @@ module top$lanes$0$compositor$ch_b(clock,front,back,front_alpha,result);
     reg  [15:0] front_qq$d;
     wire  [15:0] front_qq$q;
     reg  front_qq$clock;
+    reg  [15:0] front_qqq$d;
+    wire  [15:0] front_qqq$q;
+    reg  front_qqq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -471,6 +535,11 @@ module top$lanes$0$compositor$ch_b(clock,front,back,front_alpha,result);
         .q(front_qq$q),
         .clock(front_qq$clock)
     );
+    top$lanes$0$compositor$ch_b$front_qqq front_qqq(
+        .d(front_qqq$d),
+        .q(front_qqq$q),
+        .clock(front_qqq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
@@ -479,10 +548,12 @@ module top$lanes$0$compositor$ch_b(clock,front,back,front_alpha,result);
         back_q$clock = clock;
         front_q$clock = clock;
         front_qq$clock = clock;
+        front_qqq$clock = clock;
         weight_q$d = weight_q$q;
         back_q$d = back_q$q;
         front_q$d = front_q$q;
         front_qq$d = front_qq$q;
+        front_qqq$d = front_qqq$q;
         weight_q$d = m - front_alpha;
         back_q$d = back;
         front_q$d = front;
@@ -490,7 +561,8 @@ module top$lanes$0$compositor$ch_b(clock,front,back,front_alpha,result);
         mul$a = weight_q$q;
         mul$b = back_q$q;
         front_qq$d = front_q$q;
-        sum = 32'(front_qq$q) + 32'(mul$y);
+        front_qqq$d = front_qq$q;
+        sum = 32'(front_qqq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -550,6 +622,23 @@ module top$lanes$0$compositor$ch_b$front_qq(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$ch_b$front_qq
+module top$lanes$0$compositor$ch_b$front_qqq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_b$front_qqq
 module top$lanes$0$compositor$ch_b$mul(clock,a,b,y);
     
     // Module arguments
@@ -561,14 +650,21 @@ module top$lanes$0$compositor$ch_b$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$0$compositor$ch_b$mul$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$0$compositor$ch_b$mul$t t(
         .d(t$d),
         .q(t$q),
@@ -576,19 +672,34 @@ module top$lanes$0$compositor$ch_b$mul(clock,a,b,y);
     );
     
     // Update code
-    reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
+        p$d = a * b;
+        t$d = p$q + half;
+        y = 16'((t$q + (t$q >> shift)) >> shift);
     end
     
 endmodule // top$lanes$0$compositor$ch_b$mul
+module top$lanes$0$compositor$ch_b$mul$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_b$mul$p
 module top$lanes$0$compositor$ch_b$mul$t(d,q,clock);
     
     // Module arguments
@@ -652,6 +763,9 @@ module top$lanes$0$compositor$ch_g(clock,front,back,front_alpha,result);
     reg  [15:0] front_qq$d;
     wire  [15:0] front_qq$q;
     reg  front_qq$clock;
+    reg  [15:0] front_qqq$d;
+    wire  [15:0] front_qqq$q;
+    reg  front_qqq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -683,6 +797,11 @@ module top$lanes$0$compositor$ch_g(clock,front,back,front_alpha,result);
         .q(front_qq$q),
         .clock(front_qq$clock)
     );
+    top$lanes$0$compositor$ch_g$front_qqq front_qqq(
+        .d(front_qqq$d),
+        .q(front_qqq$q),
+        .clock(front_qqq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
@@ -691,10 +810,12 @@ module top$lanes$0$compositor$ch_g(clock,front,back,front_alpha,result);
         back_q$clock = clock;
         front_q$clock = clock;
         front_qq$clock = clock;
+        front_qqq$clock = clock;
         weight_q$d = weight_q$q;
         back_q$d = back_q$q;
         front_q$d = front_q$q;
         front_qq$d = front_qq$q;
+        front_qqq$d = front_qqq$q;
         weight_q$d = m - front_alpha;
         back_q$d = back;
         front_q$d = front;
@@ -702,7 +823,8 @@ module top$lanes$0$compositor$ch_g(clock,front,back,front_alpha,result);
         mul$a = weight_q$q;
         mul$b = back_q$q;
         front_qq$d = front_q$q;
-        sum = 32'(front_qq$q) + 32'(mul$y);
+        front_qqq$d = front_qq$q;
+        sum = 32'(front_qqq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -762,6 +884,23 @@ module top$lanes$0$compositor$ch_g$front_qq(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$ch_g$front_qq
+module top$lanes$0$compositor$ch_g$front_qqq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_g$front_qqq
 module top$lanes$0$compositor$ch_g$mul(clock,a,b,y);
     
     // Module arguments
@@ -773,14 +912,21 @@ module top$lanes$0$compositor$ch_g$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$0$compositor$ch_g$mul$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$0$compositor$ch_g$mul$t t(
         .d(t$d),
         .q(t$q),
@@ -788,19 +934,34 @@ module top$lanes$0$compositor$ch_g$mul(clock,a,b,y);
     );
     
     // Update code
-    reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
+        p$d = a * b;
+        t$d = p$q + half;
+        y = 16'((t$q + (t$q >> shift)) >> shift);
     end
     
 endmodule // top$lanes$0$compositor$ch_g$mul
+module top$lanes$0$compositor$ch_g$mul$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_g$mul$p
 module top$lanes$0$compositor$ch_g$mul$t(d,q,clock);
     
     // Module arguments
@@ -864,6 +1025,9 @@ module top$lanes$0$compositor$ch_r(clock,front,back,front_alpha,result);
     reg  [15:0] front_qq$d;
     wire  [15:0] front_qq$q;
     reg  front_qq$clock;
+    reg  [15:0] front_qqq$d;
+    wire  [15:0] front_qqq$q;
+    reg  front_qqq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -895,6 +1059,11 @@ module top$lanes$0$compositor$ch_r(clock,front,back,front_alpha,result);
         .q(front_qq$q),
         .clock(front_qq$clock)
     );
+    top$lanes$0$compositor$ch_r$front_qqq front_qqq(
+        .d(front_qqq$d),
+        .q(front_qqq$q),
+        .clock(front_qqq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
@@ -903,10 +1072,12 @@ module top$lanes$0$compositor$ch_r(clock,front,back,front_alpha,result);
         back_q$clock = clock;
         front_q$clock = clock;
         front_qq$clock = clock;
+        front_qqq$clock = clock;
         weight_q$d = weight_q$q;
         back_q$d = back_q$q;
         front_q$d = front_q$q;
         front_qq$d = front_qq$q;
+        front_qqq$d = front_qqq$q;
         weight_q$d = m - front_alpha;
         back_q$d = back;
         front_q$d = front;
@@ -914,7 +1085,8 @@ module top$lanes$0$compositor$ch_r(clock,front,back,front_alpha,result);
         mul$a = weight_q$q;
         mul$b = back_q$q;
         front_qq$d = front_q$q;
-        sum = 32'(front_qq$q) + 32'(mul$y);
+        front_qqq$d = front_qq$q;
+        sum = 32'(front_qqq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -974,6 +1146,23 @@ module top$lanes$0$compositor$ch_r$front_qq(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$ch_r$front_qq
+module top$lanes$0$compositor$ch_r$front_qqq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_r$front_qqq
 module top$lanes$0$compositor$ch_r$mul(clock,a,b,y);
     
     // Module arguments
@@ -985,14 +1174,21 @@ module top$lanes$0$compositor$ch_r$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$0$compositor$ch_r$mul$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$0$compositor$ch_r$mul$t t(
         .d(t$d),
         .q(t$q),
@@ -1000,19 +1196,34 @@ module top$lanes$0$compositor$ch_r$mul(clock,a,b,y);
     );
     
     // Update code
-    reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
+        p$d = a * b;
+        t$d = p$q + half;
+        y = 16'((t$q + (t$q >> shift)) >> shift);
     end
     
 endmodule // top$lanes$0$compositor$ch_r$mul
+module top$lanes$0$compositor$ch_r$mul$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$ch_r$mul$p
 module top$lanes$0$compositor$ch_r$mul$t(d,q,clock);
     
     // Module arguments
@@ -1149,6 +1360,23 @@ module top$lanes$0$compositor$scalar_qq(d,q,clock);
     end
           
 endmodule // top$lanes$0$compositor$scalar_qq
+module top$lanes$0$compositor$scalar_qqq(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$compositor$scalar_qqq
 module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,new_a,new_valid,out_r,out_g,out_b,out_a,order);
     
     // Module arguments
@@ -1199,6 +1427,9 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     reg  [31:0] scalar_qq$d;
     wire  [31:0] scalar_qq$q;
     reg  scalar_qq$clock;
+    reg  [31:0] scalar_qqq$d;
+    wire  [31:0] scalar_qqq$q;
+    reg  scalar_qqq$clock;
     reg  [31:0] reg_r$d;
     wire  [31:0] reg_r$q;
     reg  reg_r$clock;
@@ -1251,6 +1482,11 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
         .q(scalar_qq$q),
         .clock(scalar_qq$clock)
     );
+    top$lanes$1$compositor$scalar_qqq scalar_qqq(
+        .d(scalar_qqq$d),
+        .q(scalar_qqq$q),
+        .clock(scalar_qqq$clock)
+    );
     top$lanes$1$compositor$reg_r reg_r(
         .d(reg_r$d),
         .q(reg_r$q),
@@ -1276,12 +1512,14 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
     always @(*) begin
         scalar_q$clock = clock;
         scalar_qq$clock = clock;
+        scalar_qqq$clock = clock;
         reg_r$clock = clock;
         reg_g$clock = clock;
         reg_b$clock = clock;
         reg_a$clock = clock;
         scalar_q$d = scalar_q$q;
         scalar_qq$d = scalar_qq$q;
+        scalar_qqq$d = scalar_qqq$q;
         reg_r$d = reg_r$q;
         reg_g$d = reg_g$q;
         reg_b$d = reg_b$q;
@@ -1333,7 +1571,8 @@ module top$lanes$1$compositor(clock,acc_r,acc_g,acc_b,acc_a,new_r,new_g,new_b,ne
             scalar_q$d = acc_r + new_r;
         end
         scalar_qq$d = scalar_q$q;
-        reg_r$d = scalar_qq$q;
+        scalar_qqq$d = scalar_qq$q;
+        reg_r$d = scalar_qqq$q;
         reg_g$d = 'h0;
         reg_b$d = 'h0;
         reg_a$d = 'h0;
@@ -1379,6 +1618,9 @@ module top$lanes$1$compositor$ch_a(clock,front,back,front_alpha,result);
     reg  [15:0] front_qq$d;
     wire  [15:0] front_qq$q;
     reg  front_qq$clock;
+    reg  [15:0] front_qqq$d;
+    wire  [15:0] front_qqq$q;
+    reg  front_qqq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -1410,6 +1652,11 @@ module top$lanes$1$compositor$ch_a(clock,front,back,front_alpha,result);
         .q(front_qq$q),
         .clock(front_qq$clock)
     );
+    top$lanes$1$compositor$ch_a$front_qqq front_qqq(
+        .d(front_qqq$d),
+        .q(front_qqq$q),
+        .clock(front_qqq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
@@ -1418,10 +1665,12 @@ module top$lanes$1$compositor$ch_a(clock,front,back,front_alpha,result);
         back_q$clock = clock;
         front_q$clock = clock;
         front_qq$clock = clock;
+        front_qqq$clock = clock;
         weight_q$d = weight_q$q;
         back_q$d = back_q$q;
         front_q$d = front_q$q;
         front_qq$d = front_qq$q;
+        front_qqq$d = front_qqq$q;
         weight_q$d = m - front_alpha;
         back_q$d = back;
         front_q$d = front;
@@ -1429,7 +1678,8 @@ module top$lanes$1$compositor$ch_a(clock,front,back,front_alpha,result);
         mul$a = weight_q$q;
         mul$b = back_q$q;
         front_qq$d = front_q$q;
-        sum = 32'(front_qq$q) + 32'(mul$y);
+        front_qqq$d = front_qq$q;
+        sum = 32'(front_qqq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1489,6 +1739,23 @@ module top$lanes$1$compositor$ch_a$front_qq(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$ch_a$front_qq
+module top$lanes$1$compositor$ch_a$front_qqq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_a$front_qqq
 module top$lanes$1$compositor$ch_a$mul(clock,a,b,y);
     
     // Module arguments
@@ -1500,14 +1767,21 @@ module top$lanes$1$compositor$ch_a$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$1$compositor$ch_a$mul$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$1$compositor$ch_a$mul$t t(
         .d(t$d),
         .q(t$q),
@@ -1515,19 +1789,34 @@ module top$lanes$1$compositor$ch_a$mul(clock,a,b,y);
     );
     
     // Update code
-    reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
+        p$d = a * b;
+        t$d = p$q + half;
+        y = 16'((t$q + (t$q >> shift)) >> shift);
     end
     
 endmodule // top$lanes$1$compositor$ch_a$mul
+module top$lanes$1$compositor$ch_a$mul$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_a$mul$p
 module top$lanes$1$compositor$ch_a$mul$t(d,q,clock);
     
     // Module arguments
@@ -1591,6 +1880,9 @@ module top$lanes$1$compositor$ch_b(clock,front,back,front_alpha,result);
     reg  [15:0] front_qq$d;
     wire  [15:0] front_qq$q;
     reg  front_qq$clock;
+    reg  [15:0] front_qqq$d;
+    wire  [15:0] front_qqq$q;
+    reg  front_qqq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -1622,6 +1914,11 @@ module top$lanes$1$compositor$ch_b(clock,front,back,front_alpha,result);
         .q(front_qq$q),
         .clock(front_qq$clock)
     );
+    top$lanes$1$compositor$ch_b$front_qqq front_qqq(
+        .d(front_qqq$d),
+        .q(front_qqq$q),
+        .clock(front_qqq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
@@ -1630,10 +1927,12 @@ module top$lanes$1$compositor$ch_b(clock,front,back,front_alpha,result);
         back_q$clock = clock;
         front_q$clock = clock;
         front_qq$clock = clock;
+        front_qqq$clock = clock;
         weight_q$d = weight_q$q;
         back_q$d = back_q$q;
         front_q$d = front_q$q;
         front_qq$d = front_qq$q;
+        front_qqq$d = front_qqq$q;
         weight_q$d = m - front_alpha;
         back_q$d = back;
         front_q$d = front;
@@ -1641,7 +1940,8 @@ module top$lanes$1$compositor$ch_b(clock,front,back,front_alpha,result);
         mul$a = weight_q$q;
         mul$b = back_q$q;
         front_qq$d = front_q$q;
-        sum = 32'(front_qq$q) + 32'(mul$y);
+        front_qqq$d = front_qq$q;
+        sum = 32'(front_qqq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1701,6 +2001,23 @@ module top$lanes$1$compositor$ch_b$front_qq(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$ch_b$front_qq
+module top$lanes$1$compositor$ch_b$front_qqq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_b$front_qqq
 module top$lanes$1$compositor$ch_b$mul(clock,a,b,y);
     
     // Module arguments
@@ -1712,14 +2029,21 @@ module top$lanes$1$compositor$ch_b$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$1$compositor$ch_b$mul$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$1$compositor$ch_b$mul$t t(
         .d(t$d),
         .q(t$q),
@@ -1727,19 +2051,34 @@ module top$lanes$1$compositor$ch_b$mul(clock,a,b,y);
     );
     
     // Update code
-    reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
+        p$d = a * b;
+        t$d = p$q + half;
+        y = 16'((t$q + (t$q >> shift)) >> shift);
     end
     
 endmodule // top$lanes$1$compositor$ch_b$mul
+module top$lanes$1$compositor$ch_b$mul$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_b$mul$p
 module top$lanes$1$compositor$ch_b$mul$t(d,q,clock);
     
     // Module arguments
@@ -1803,6 +2142,9 @@ module top$lanes$1$compositor$ch_g(clock,front,back,front_alpha,result);
     reg  [15:0] front_qq$d;
     wire  [15:0] front_qq$q;
     reg  front_qq$clock;
+    reg  [15:0] front_qqq$d;
+    wire  [15:0] front_qqq$q;
+    reg  front_qqq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -1834,6 +2176,11 @@ module top$lanes$1$compositor$ch_g(clock,front,back,front_alpha,result);
         .q(front_qq$q),
         .clock(front_qq$clock)
     );
+    top$lanes$1$compositor$ch_g$front_qqq front_qqq(
+        .d(front_qqq$d),
+        .q(front_qqq$q),
+        .clock(front_qqq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
@@ -1842,10 +2189,12 @@ module top$lanes$1$compositor$ch_g(clock,front,back,front_alpha,result);
         back_q$clock = clock;
         front_q$clock = clock;
         front_qq$clock = clock;
+        front_qqq$clock = clock;
         weight_q$d = weight_q$q;
         back_q$d = back_q$q;
         front_q$d = front_q$q;
         front_qq$d = front_qq$q;
+        front_qqq$d = front_qqq$q;
         weight_q$d = m - front_alpha;
         back_q$d = back;
         front_q$d = front;
@@ -1853,7 +2202,8 @@ module top$lanes$1$compositor$ch_g(clock,front,back,front_alpha,result);
         mul$a = weight_q$q;
         mul$b = back_q$q;
         front_qq$d = front_q$q;
-        sum = 32'(front_qq$q) + 32'(mul$y);
+        front_qqq$d = front_qq$q;
+        sum = 32'(front_qqq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -1913,6 +2263,23 @@ module top$lanes$1$compositor$ch_g$front_qq(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$ch_g$front_qq
+module top$lanes$1$compositor$ch_g$front_qqq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_g$front_qqq
 module top$lanes$1$compositor$ch_g$mul(clock,a,b,y);
     
     // Module arguments
@@ -1924,14 +2291,21 @@ module top$lanes$1$compositor$ch_g$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$1$compositor$ch_g$mul$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$1$compositor$ch_g$mul$t t(
         .d(t$d),
         .q(t$q),
@@ -1939,19 +2313,34 @@ module top$lanes$1$compositor$ch_g$mul(clock,a,b,y);
     );
     
     // Update code
-    reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
+        p$d = a * b;
+        t$d = p$q + half;
+        y = 16'((t$q + (t$q >> shift)) >> shift);
     end
     
 endmodule // top$lanes$1$compositor$ch_g$mul
+module top$lanes$1$compositor$ch_g$mul$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_g$mul$p
 module top$lanes$1$compositor$ch_g$mul$t(d,q,clock);
     
     // Module arguments
@@ -2015,6 +2404,9 @@ module top$lanes$1$compositor$ch_r(clock,front,back,front_alpha,result);
     reg  [15:0] front_qq$d;
     wire  [15:0] front_qq$q;
     reg  front_qq$clock;
+    reg  [15:0] front_qqq$d;
+    wire  [15:0] front_qqq$q;
+    reg  front_qqq$clock;
     
     // Local signals
     reg  [31:0] sum;
@@ -2046,6 +2438,11 @@ module top$lanes$1$compositor$ch_r(clock,front,back,front_alpha,result);
         .q(front_qq$q),
         .clock(front_qq$clock)
     );
+    top$lanes$1$compositor$ch_r$front_qqq front_qqq(
+        .d(front_qqq$d),
+        .q(front_qqq$q),
+        .clock(front_qqq$clock)
+    );
     
     // Update code
     reg  [15:0] result_pass;
@@ -2054,10 +2451,12 @@ module top$lanes$1$compositor$ch_r(clock,front,back,front_alpha,result);
         back_q$clock = clock;
         front_q$clock = clock;
         front_qq$clock = clock;
+        front_qqq$clock = clock;
         weight_q$d = weight_q$q;
         back_q$d = back_q$q;
         front_q$d = front_q$q;
         front_qq$d = front_qq$q;
+        front_qqq$d = front_qqq$q;
         weight_q$d = m - front_alpha;
         back_q$d = back;
         front_q$d = front;
@@ -2065,7 +2464,8 @@ module top$lanes$1$compositor$ch_r(clock,front,back,front_alpha,result);
         mul$a = weight_q$q;
         mul$b = back_q$q;
         front_qq$d = front_q$q;
-        sum = 32'(front_qq$q) + 32'(mul$y);
+        front_qqq$d = front_qq$q;
+        sum = 32'(front_qqq$q) + 32'(mul$y);
         result_pass = 16'(sum);
         if (sum > 32'(m)) begin
             result_pass = m;
@@ -2125,6 +2525,23 @@ module top$lanes$1$compositor$ch_r$front_qq(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$ch_r$front_qq
+module top$lanes$1$compositor$ch_r$front_qqq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_r$front_qqq
 module top$lanes$1$compositor$ch_r$mul(clock,a,b,y);
     
     // Module arguments
@@ -2136,14 +2553,21 @@ module top$lanes$1$compositor$ch_r$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$1$compositor$ch_r$mul$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$1$compositor$ch_r$mul$t t(
         .d(t$d),
         .q(t$q),
@@ -2151,19 +2575,34 @@ module top$lanes$1$compositor$ch_r$mul(clock,a,b,y);
     );
     
     // Update code
-    reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
-        end
-        y = y_pass;
+        p$d = a * b;
+        t$d = p$q + half;
+        y = 16'((t$q + (t$q >> shift)) >> shift);
     end
     
 endmodule // top$lanes$1$compositor$ch_r$mul
+module top$lanes$1$compositor$ch_r$mul$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$ch_r$mul$p
 module top$lanes$1$compositor$ch_r$mul$t(d,q,clock);
     
     // Module arguments
@@ -2300,3 +2739,20 @@ module top$lanes$1$compositor$scalar_qq(d,q,clock);
     end
           
 endmodule // top$lanes$1$compositor$scalar_qq
+module top$lanes$1$compositor$scalar_qqq(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$compositor$scalar_qqq

@@ -364,6 +364,21 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] nb_q$d;
     wire  [15:0] nb_q$q;
     reg  nb_q$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] b_last$d;
+    wire  [15:0] b_last$q;
+    reg  b_last$clock;
+    reg  [15:0] nb_left$d;
+    wire  [15:0] nb_left$q;
+    reg  nb_left$clock;
+    reg  [15:0] nbeam_left$d;
+    wire  [15:0] nbeam_left$q;
+    reg  nbeam_left$clock;
+    reg  [15:0] ns_left$d;
+    wire  [15:0] ns_left$q;
+    reg  ns_left$clock;
     
     // Local signals
     reg  e_run;
@@ -372,8 +387,6 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] e_nb;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] ny_last;
-    reg  [15:0] b_last;
     
     // Sub module instances
     top$cfb$lanes$0 lanes$0(
@@ -676,6 +689,31 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .q(nb_q$q),
         .clock(nb_q$clock)
     );
+    top$cfb$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$cfb$b_last b_last(
+        .d(b_last$d),
+        .q(b_last$q),
+        .clock(b_last$clock)
+    );
+    top$cfb$nb_left nb_left(
+        .d(nb_left$d),
+        .q(nb_left$q),
+        .clock(nb_left$clock)
+    );
+    top$cfb$nbeam_left nbeam_left(
+        .d(nbeam_left$d),
+        .q(nbeam_left$q),
+        .clock(nbeam_left$clock)
+    );
+    top$cfb$ns_left ns_left(
+        .d(ns_left$d),
+        .q(ns_left$q),
+        .clock(ns_left$clock)
+    );
     
     // Update code
     reg  busy_pass;
@@ -704,6 +742,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_d2$clock = clock;
         nb_d3$clock = clock;
         nb_d4$clock = clock;
+        ny_last$clock = clock;
+        b_last$clock = clock;
+        nb_left$clock = clock;
+        nbeam_left$clock = clock;
+        ns_left$clock = clock;
         running$d = running$q;
         ns_c$d = ns_c$q;
         nbeam_c$d = nbeam_c$q;
@@ -728,6 +771,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_d2$d = nb_d2$q;
         nb_d3$d = nb_d3$q;
         nb_d4$d = nb_d4$q;
+        ny_last$d = ny_last$q;
+        b_last$d = b_last$q;
+        nb_left$d = nb_left$q;
+        nbeam_left$d = nbeam_left$q;
+        ns_left$d = ns_left$q;
         lead$clock = clock;
         lead$reset = reset;
         lead$running = running$q;
@@ -762,8 +810,8 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_d4$d = nb_d3$q;
         z0 = slices[('h20)+:(16)];
         z1 = slices[('h30)+:(16)];
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        b_last = beats[('h20)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        b_last$d = beats[('h20)+:(16)] - 'h1;
         lanes$0$clock = clock;
         lanes$0$dims = dims;
         lanes$0$slices = slices;
@@ -941,20 +989,28 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
             ns_c$d = z0;
             nbeam_c$d = 'h0;
             nb_c$d = 'h0;
+            nb_left$d = beats[('h20)+:(16)] - 'h1;
+            nbeam_left$d = dims[('h10)+:(16)] - 'h1;
+            ns_left$d = z1 - z0;
         end
         if (running$q) begin
-            if (nb_c$q != b_last) begin
+            if (nb_left$q != 'h0) begin
                 nb_c$d = nb_c$q + 'h1;
+                nb_left$d = nb_left$q - 'h1;
             end
             else begin
                 nb_c$d = 'h0;
-                if (nbeam_c$q != ny_last) begin
+                nb_left$d = b_last$q;
+                if (nbeam_left$q != 'h0) begin
                     nbeam_c$d = nbeam_c$q + 'h1;
+                    nbeam_left$d = nbeam_left$q - 'h1;
                 end
                 else begin
                     nbeam_c$d = 'h0;
-                    if (ns_c$q != z1) begin
+                    nbeam_left$d = ny_last$q;
+                    if (ns_left$q != 'h0) begin
                         ns_c$d = ns_c$q + 'h1;
+                        ns_left$d = ns_left$q - 'h1;
                     end
                     else begin
                         running$d = 1'b0;
@@ -982,6 +1038,23 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     end
     
 endmodule // top$cfb
+module top$cfb$b_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$b_last
 module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
@@ -6459,6 +6532,23 @@ module top$cfb$nb_d4(d,q,clock);
     end
           
 endmodule // top$cfb$nb_d4
+module top$cfb$nb_left(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nb_left
 module top$cfb$nb_q(d,q,clock);
     
     // Module arguments
@@ -6561,6 +6651,23 @@ module top$cfb$nbeam_d4(d,q,clock);
     end
           
 endmodule // top$cfb$nbeam_d4
+module top$cfb$nbeam_left(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nbeam_left
 module top$cfb$nbeam_q(d,q,clock);
     
     // Module arguments
@@ -6663,6 +6770,23 @@ module top$cfb$ns_d4(d,q,clock);
     end
           
 endmodule // top$cfb$ns_d4
+module top$cfb$ns_left(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ns_left
 module top$cfb$ns_q(d,q,clock);
     
     // Module arguments
@@ -6680,6 +6804,23 @@ module top$cfb$ns_q(d,q,clock);
     end
           
 endmodule // top$cfb$ns_q
+module top$cfb$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ny_last
 module top$cfb$run_d1(d,q,clock);
     
     // Module arguments
@@ -7148,6 +7289,21 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
     reg  [15:0] nb_q$d;
     wire  [15:0] nb_q$q;
     reg  nb_q$clock;
+    reg  [15:0] ny_last$d;
+    wire  [15:0] ny_last$q;
+    reg  ny_last$clock;
+    reg  [15:0] b_last$d;
+    wire  [15:0] b_last$q;
+    reg  b_last$clock;
+    reg  [15:0] nb_left$d;
+    wire  [15:0] nb_left$q;
+    reg  nb_left$clock;
+    reg  [15:0] nbeam_left$d;
+    wire  [15:0] nbeam_left$q;
+    reg  nbeam_left$clock;
+    reg  [15:0] ns_left$d;
+    wire  [15:0] ns_left$q;
+    reg  ns_left$clock;
     
     // Local signals
     reg  e_run;
@@ -7156,8 +7312,6 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
     reg  [15:0] e_nb;
     reg  [15:0] z0;
     reg  [15:0] z1;
-    reg  [15:0] ny_last;
-    reg  [15:0] b_last;
     
     // Sub module instances
     top$late$lanes$0 lanes$0(
@@ -7460,6 +7614,31 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         .q(nb_q$q),
         .clock(nb_q$clock)
     );
+    top$late$ny_last ny_last(
+        .d(ny_last$d),
+        .q(ny_last$q),
+        .clock(ny_last$clock)
+    );
+    top$late$b_last b_last(
+        .d(b_last$d),
+        .q(b_last$q),
+        .clock(b_last$clock)
+    );
+    top$late$nb_left nb_left(
+        .d(nb_left$d),
+        .q(nb_left$q),
+        .clock(nb_left$clock)
+    );
+    top$late$nbeam_left nbeam_left(
+        .d(nbeam_left$d),
+        .q(nbeam_left$q),
+        .clock(nbeam_left$clock)
+    );
+    top$late$ns_left ns_left(
+        .d(ns_left$d),
+        .q(ns_left$q),
+        .clock(ns_left$clock)
+    );
     
     // Update code
     reg  busy_pass;
@@ -7488,6 +7667,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         nb_d2$clock = clock;
         nb_d3$clock = clock;
         nb_d4$clock = clock;
+        ny_last$clock = clock;
+        b_last$clock = clock;
+        nb_left$clock = clock;
+        nbeam_left$clock = clock;
+        ns_left$clock = clock;
         running$d = running$q;
         ns_c$d = ns_c$q;
         nbeam_c$d = nbeam_c$q;
@@ -7512,6 +7696,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         nb_d2$d = nb_d2$q;
         nb_d3$d = nb_d3$q;
         nb_d4$d = nb_d4$q;
+        ny_last$d = ny_last$q;
+        b_last$d = b_last$q;
+        nb_left$d = nb_left$q;
+        nbeam_left$d = nbeam_left$q;
+        ns_left$d = ns_left$q;
         lead$clock = clock;
         lead$reset = reset;
         lead$running = running$q;
@@ -7546,8 +7735,8 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         nb_d4$d = nb_d3$q;
         z0 = slices[('h20)+:(16)];
         z1 = slices[('h30)+:(16)];
-        ny_last = dims[('h10)+:(16)] - 'h1;
-        b_last = beats[('h20)+:(16)] - 'h1;
+        ny_last$d = dims[('h10)+:(16)] - 'h1;
+        b_last$d = beats[('h20)+:(16)] - 'h1;
         lanes$0$clock = clock;
         lanes$0$dims = dims;
         lanes$0$slices = slices;
@@ -7725,20 +7914,28 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
             ns_c$d = z0;
             nbeam_c$d = 'h0;
             nb_c$d = 'h0;
+            nb_left$d = beats[('h20)+:(16)] - 'h1;
+            nbeam_left$d = dims[('h10)+:(16)] - 'h1;
+            ns_left$d = z1 - z0;
         end
         if (running$q) begin
-            if (nb_c$q != b_last) begin
+            if (nb_left$q != 'h0) begin
                 nb_c$d = nb_c$q + 'h1;
+                nb_left$d = nb_left$q - 'h1;
             end
             else begin
                 nb_c$d = 'h0;
-                if (nbeam_c$q != ny_last) begin
+                nb_left$d = b_last$q;
+                if (nbeam_left$q != 'h0) begin
                     nbeam_c$d = nbeam_c$q + 'h1;
+                    nbeam_left$d = nbeam_left$q - 'h1;
                 end
                 else begin
                     nbeam_c$d = 'h0;
-                    if (ns_c$q != z1) begin
+                    nbeam_left$d = ny_last$q;
+                    if (ns_left$q != 'h0) begin
                         ns_c$d = ns_c$q + 'h1;
+                        ns_left$d = ns_left$q - 'h1;
                     end
                     else begin
                         running$d = 1'b0;
@@ -7766,6 +7963,23 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
     end
     
 endmodule // top$late
+module top$late$b_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$b_last
 module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
@@ -13243,6 +13457,23 @@ module top$late$nb_d4(d,q,clock);
     end
           
 endmodule // top$late$nb_d4
+module top$late$nb_left(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$nb_left
 module top$late$nb_q(d,q,clock);
     
     // Module arguments
@@ -13345,6 +13576,23 @@ module top$late$nbeam_d4(d,q,clock);
     end
           
 endmodule // top$late$nbeam_d4
+module top$late$nbeam_left(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$nbeam_left
 module top$late$nbeam_q(d,q,clock);
     
     // Module arguments
@@ -13447,6 +13695,23 @@ module top$late$ns_d4(d,q,clock);
     end
           
 endmodule // top$late$ns_d4
+module top$late$ns_left(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$ns_left
 module top$late$ns_q(d,q,clock);
     
     // Module arguments
@@ -13464,6 +13729,23 @@ module top$late$ns_q(d,q,clock);
     end
           
 endmodule // top$late$ns_q
+module top$late$ny_last(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$ny_last
 module top$late$run_d1(d,q,clock);
     
     // Module arguments

@@ -1058,6 +1058,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$17$d;
     wire  v_q$17$q;
     reg  v_q$17$clock;
+    reg  v_q$18$d;
+    wire  v_q$18$q;
+    reg  v_q$18$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -1112,6 +1115,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$17$d;
     wire  er_q$17$q;
     reg  er_q$17$clock;
+    reg  er_q$18$d;
+    wire  er_q$18$q;
+    reg  er_q$18$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -1166,6 +1172,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$17$d;
     wire  pad_q$17$q;
     reg  pad_q$17$clock;
+    reg  pad_q$18$d;
+    wire  pad_q$18$q;
+    reg  pad_q$18$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -1220,6 +1229,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$17$d;
     wire  [15:0] bx_q$17$q;
     reg  bx_q$17$clock;
+    reg  [15:0] bx_q$18$d;
+    wire  [15:0] bx_q$18$q;
+    reg  bx_q$18$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -1274,6 +1286,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$17$d;
     wire  [15:0] by_q$17$q;
     reg  by_q$17$clock;
+    reg  [15:0] by_q$18$d;
+    wire  [15:0] by_q$18$q;
+    reg  by_q$18$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -1328,6 +1343,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$17$d;
     wire  [2:0] face_q$17$q;
     reg  face_q$17$clock;
+    reg  [2:0] face_q$18$d;
+    wire  [2:0] face_q$18$q;
+    reg  face_q$18$clock;
     
     // Sub module instances
     top$lanes$0$ctl$nx_last nx_last(
@@ -1715,6 +1733,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$17$q),
         .clock(v_q$17$clock)
     );
+    top$lanes$0$ctl$v_q$18 v_q$18(
+        .d(v_q$18$d),
+        .q(v_q$18$q),
+        .clock(v_q$18$clock)
+    );
     top$lanes$0$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -1804,6 +1827,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$17$d),
         .q(er_q$17$q),
         .clock(er_q$17$clock)
+    );
+    top$lanes$0$ctl$er_q$18 er_q$18(
+        .d(er_q$18$d),
+        .q(er_q$18$q),
+        .clock(er_q$18$clock)
     );
     top$lanes$0$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -1895,6 +1923,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$17$q),
         .clock(pad_q$17$clock)
     );
+    top$lanes$0$ctl$pad_q$18 pad_q$18(
+        .d(pad_q$18$d),
+        .q(pad_q$18$q),
+        .clock(pad_q$18$clock)
+    );
     top$lanes$0$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -1984,6 +2017,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$17$d),
         .q(bx_q$17$q),
         .clock(bx_q$17$clock)
+    );
+    top$lanes$0$ctl$bx_q$18 bx_q$18(
+        .d(bx_q$18$d),
+        .q(bx_q$18$q),
+        .clock(bx_q$18$clock)
     );
     top$lanes$0$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -2075,6 +2113,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$17$q),
         .clock(by_q$17$clock)
     );
+    top$lanes$0$ctl$by_q$18 by_q$18(
+        .d(by_q$18$d),
+        .q(by_q$18$q),
+        .clock(by_q$18$clock)
+    );
     top$lanes$0$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -2164,6 +2207,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(face_q$17$d),
         .q(face_q$17$q),
         .clock(face_q$17$clock)
+    );
+    top$lanes$0$ctl$face_q$18 face_q$18(
+        .d(face_q$18$d),
+        .q(face_q$18$q),
+        .clock(face_q$18$clock)
     );
     
     // Update code
@@ -2332,6 +2380,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$clock = clock;
         by_q$17$clock = clock;
         face_q$17$clock = clock;
+        v_q$18$clock = clock;
+        er_q$18$clock = clock;
+        pad_q$18$clock = clock;
+        bx_q$18$clock = clock;
+        by_q$18$clock = clock;
+        face_q$18$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -2530,12 +2584,18 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$d = bx_q$16$q;
         by_q$17$d = by_q$16$q;
         face_q$17$d = face_q$16$q;
-        res_beat = v_q$17$q;
-        res_valid = v_q$17$q & ~pad_q$17$q;
-        px_valid = v_q$17$q & er_q$17$q & ~pad_q$17$q;
-        px_x = bx_q$17$q;
-        px_y = by_q$17$q;
-        px_face = face_q$17$q;
+        v_q$18$d = v_q$17$q;
+        er_q$18$d = er_q$17$q;
+        pad_q$18$d = pad_q$17$q;
+        bx_q$18$d = bx_q$17$q;
+        by_q$18$d = by_q$17$q;
+        face_q$18$d = face_q$17$q;
+        res_beat = v_q$18$q;
+        res_valid = v_q$18$q & ~pad_q$18$q;
+        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
+        px_x = bx_q$18$q;
+        px_y = by_q$18$q;
+        px_face = face_q$18$q;
     end
     
 endmodule // top$lanes$0$ctl
@@ -2709,6 +2769,23 @@ module top$lanes$0$ctl$bx_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$bx_q$17
+module top$lanes$0$ctl$bx_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$18
 module top$lanes$0$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -3015,6 +3092,23 @@ module top$lanes$0$ctl$by_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$by_q$17
+module top$lanes$0$ctl$by_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$18
 module top$lanes$0$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -3865,6 +3959,23 @@ module top$lanes$0$ctl$er_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$er_q$17
+module top$lanes$0$ctl$er_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$18
 module top$lanes$0$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -4171,6 +4282,23 @@ module top$lanes$0$ctl$face_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$17
+module top$lanes$0$ctl$face_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$18
 module top$lanes$0$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -4511,6 +4639,23 @@ module top$lanes$0$ctl$pad_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$17
+module top$lanes$0$ctl$pad_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$18
 module top$lanes$0$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -4953,6 +5098,23 @@ module top$lanes$0$ctl$v_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$17
+module top$lanes$0$ctl$v_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$18
 module top$lanes$0$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -6583,6 +6745,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$17$d;
     wire  v_q$17$q;
     reg  v_q$17$clock;
+    reg  v_q$18$d;
+    wire  v_q$18$q;
+    reg  v_q$18$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -6637,6 +6802,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$17$d;
     wire  er_q$17$q;
     reg  er_q$17$clock;
+    reg  er_q$18$d;
+    wire  er_q$18$q;
+    reg  er_q$18$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -6691,6 +6859,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$17$d;
     wire  pad_q$17$q;
     reg  pad_q$17$clock;
+    reg  pad_q$18$d;
+    wire  pad_q$18$q;
+    reg  pad_q$18$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -6745,6 +6916,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$17$d;
     wire  [15:0] bx_q$17$q;
     reg  bx_q$17$clock;
+    reg  [15:0] bx_q$18$d;
+    wire  [15:0] bx_q$18$q;
+    reg  bx_q$18$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -6799,6 +6973,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$17$d;
     wire  [15:0] by_q$17$q;
     reg  by_q$17$clock;
+    reg  [15:0] by_q$18$d;
+    wire  [15:0] by_q$18$q;
+    reg  by_q$18$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -6853,6 +7030,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$17$d;
     wire  [2:0] face_q$17$q;
     reg  face_q$17$clock;
+    reg  [2:0] face_q$18$d;
+    wire  [2:0] face_q$18$q;
+    reg  face_q$18$clock;
     
     // Sub module instances
     top$lanes$1$ctl$nx_last nx_last(
@@ -7240,6 +7420,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$17$q),
         .clock(v_q$17$clock)
     );
+    top$lanes$1$ctl$v_q$18 v_q$18(
+        .d(v_q$18$d),
+        .q(v_q$18$q),
+        .clock(v_q$18$clock)
+    );
     top$lanes$1$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -7329,6 +7514,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$17$d),
         .q(er_q$17$q),
         .clock(er_q$17$clock)
+    );
+    top$lanes$1$ctl$er_q$18 er_q$18(
+        .d(er_q$18$d),
+        .q(er_q$18$q),
+        .clock(er_q$18$clock)
     );
     top$lanes$1$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -7420,6 +7610,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$17$q),
         .clock(pad_q$17$clock)
     );
+    top$lanes$1$ctl$pad_q$18 pad_q$18(
+        .d(pad_q$18$d),
+        .q(pad_q$18$q),
+        .clock(pad_q$18$clock)
+    );
     top$lanes$1$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -7509,6 +7704,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$17$d),
         .q(bx_q$17$q),
         .clock(bx_q$17$clock)
+    );
+    top$lanes$1$ctl$bx_q$18 bx_q$18(
+        .d(bx_q$18$d),
+        .q(bx_q$18$q),
+        .clock(bx_q$18$clock)
     );
     top$lanes$1$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -7600,6 +7800,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$17$q),
         .clock(by_q$17$clock)
     );
+    top$lanes$1$ctl$by_q$18 by_q$18(
+        .d(by_q$18$d),
+        .q(by_q$18$q),
+        .clock(by_q$18$clock)
+    );
     top$lanes$1$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -7689,6 +7894,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(face_q$17$d),
         .q(face_q$17$q),
         .clock(face_q$17$clock)
+    );
+    top$lanes$1$ctl$face_q$18 face_q$18(
+        .d(face_q$18$d),
+        .q(face_q$18$q),
+        .clock(face_q$18$clock)
     );
     
     // Update code
@@ -7857,6 +8067,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$clock = clock;
         by_q$17$clock = clock;
         face_q$17$clock = clock;
+        v_q$18$clock = clock;
+        er_q$18$clock = clock;
+        pad_q$18$clock = clock;
+        bx_q$18$clock = clock;
+        by_q$18$clock = clock;
+        face_q$18$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -8055,12 +8271,18 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$d = bx_q$16$q;
         by_q$17$d = by_q$16$q;
         face_q$17$d = face_q$16$q;
-        res_beat = v_q$17$q;
-        res_valid = v_q$17$q & ~pad_q$17$q;
-        px_valid = v_q$17$q & er_q$17$q & ~pad_q$17$q;
-        px_x = bx_q$17$q;
-        px_y = by_q$17$q;
-        px_face = face_q$17$q;
+        v_q$18$d = v_q$17$q;
+        er_q$18$d = er_q$17$q;
+        pad_q$18$d = pad_q$17$q;
+        bx_q$18$d = bx_q$17$q;
+        by_q$18$d = by_q$17$q;
+        face_q$18$d = face_q$17$q;
+        res_beat = v_q$18$q;
+        res_valid = v_q$18$q & ~pad_q$18$q;
+        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
+        px_x = bx_q$18$q;
+        px_y = by_q$18$q;
+        px_face = face_q$18$q;
     end
     
 endmodule // top$lanes$1$ctl
@@ -8234,6 +8456,23 @@ module top$lanes$1$ctl$bx_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$bx_q$17
+module top$lanes$1$ctl$bx_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$18
 module top$lanes$1$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -8540,6 +8779,23 @@ module top$lanes$1$ctl$by_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$by_q$17
+module top$lanes$1$ctl$by_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$18
 module top$lanes$1$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -9390,6 +9646,23 @@ module top$lanes$1$ctl$er_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$er_q$17
+module top$lanes$1$ctl$er_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$18
 module top$lanes$1$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -9696,6 +9969,23 @@ module top$lanes$1$ctl$face_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$17
+module top$lanes$1$ctl$face_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$18
 module top$lanes$1$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -10036,6 +10326,23 @@ module top$lanes$1$ctl$pad_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$17
+module top$lanes$1$ctl$pad_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$18
 module top$lanes$1$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -10478,6 +10785,23 @@ module top$lanes$1$ctl$v_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$17
+module top$lanes$1$ctl$v_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$18
 module top$lanes$1$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -12108,6 +12432,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$17$d;
     wire  v_q$17$q;
     reg  v_q$17$clock;
+    reg  v_q$18$d;
+    wire  v_q$18$q;
+    reg  v_q$18$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -12162,6 +12489,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$17$d;
     wire  er_q$17$q;
     reg  er_q$17$clock;
+    reg  er_q$18$d;
+    wire  er_q$18$q;
+    reg  er_q$18$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -12216,6 +12546,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$17$d;
     wire  pad_q$17$q;
     reg  pad_q$17$clock;
+    reg  pad_q$18$d;
+    wire  pad_q$18$q;
+    reg  pad_q$18$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -12270,6 +12603,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$17$d;
     wire  [15:0] bx_q$17$q;
     reg  bx_q$17$clock;
+    reg  [15:0] bx_q$18$d;
+    wire  [15:0] bx_q$18$q;
+    reg  bx_q$18$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -12324,6 +12660,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$17$d;
     wire  [15:0] by_q$17$q;
     reg  by_q$17$clock;
+    reg  [15:0] by_q$18$d;
+    wire  [15:0] by_q$18$q;
+    reg  by_q$18$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -12378,6 +12717,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$17$d;
     wire  [2:0] face_q$17$q;
     reg  face_q$17$clock;
+    reg  [2:0] face_q$18$d;
+    wire  [2:0] face_q$18$q;
+    reg  face_q$18$clock;
     
     // Sub module instances
     top$lanes$2$ctl$nx_last nx_last(
@@ -12765,6 +13107,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$17$q),
         .clock(v_q$17$clock)
     );
+    top$lanes$2$ctl$v_q$18 v_q$18(
+        .d(v_q$18$d),
+        .q(v_q$18$q),
+        .clock(v_q$18$clock)
+    );
     top$lanes$2$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -12854,6 +13201,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$17$d),
         .q(er_q$17$q),
         .clock(er_q$17$clock)
+    );
+    top$lanes$2$ctl$er_q$18 er_q$18(
+        .d(er_q$18$d),
+        .q(er_q$18$q),
+        .clock(er_q$18$clock)
     );
     top$lanes$2$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -12945,6 +13297,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$17$q),
         .clock(pad_q$17$clock)
     );
+    top$lanes$2$ctl$pad_q$18 pad_q$18(
+        .d(pad_q$18$d),
+        .q(pad_q$18$q),
+        .clock(pad_q$18$clock)
+    );
     top$lanes$2$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -13034,6 +13391,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$17$d),
         .q(bx_q$17$q),
         .clock(bx_q$17$clock)
+    );
+    top$lanes$2$ctl$bx_q$18 bx_q$18(
+        .d(bx_q$18$d),
+        .q(bx_q$18$q),
+        .clock(bx_q$18$clock)
     );
     top$lanes$2$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -13125,6 +13487,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$17$q),
         .clock(by_q$17$clock)
     );
+    top$lanes$2$ctl$by_q$18 by_q$18(
+        .d(by_q$18$d),
+        .q(by_q$18$q),
+        .clock(by_q$18$clock)
+    );
     top$lanes$2$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -13214,6 +13581,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(face_q$17$d),
         .q(face_q$17$q),
         .clock(face_q$17$clock)
+    );
+    top$lanes$2$ctl$face_q$18 face_q$18(
+        .d(face_q$18$d),
+        .q(face_q$18$q),
+        .clock(face_q$18$clock)
     );
     
     // Update code
@@ -13382,6 +13754,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$clock = clock;
         by_q$17$clock = clock;
         face_q$17$clock = clock;
+        v_q$18$clock = clock;
+        er_q$18$clock = clock;
+        pad_q$18$clock = clock;
+        bx_q$18$clock = clock;
+        by_q$18$clock = clock;
+        face_q$18$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -13580,12 +13958,18 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$d = bx_q$16$q;
         by_q$17$d = by_q$16$q;
         face_q$17$d = face_q$16$q;
-        res_beat = v_q$17$q;
-        res_valid = v_q$17$q & ~pad_q$17$q;
-        px_valid = v_q$17$q & er_q$17$q & ~pad_q$17$q;
-        px_x = bx_q$17$q;
-        px_y = by_q$17$q;
-        px_face = face_q$17$q;
+        v_q$18$d = v_q$17$q;
+        er_q$18$d = er_q$17$q;
+        pad_q$18$d = pad_q$17$q;
+        bx_q$18$d = bx_q$17$q;
+        by_q$18$d = by_q$17$q;
+        face_q$18$d = face_q$17$q;
+        res_beat = v_q$18$q;
+        res_valid = v_q$18$q & ~pad_q$18$q;
+        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
+        px_x = bx_q$18$q;
+        px_y = by_q$18$q;
+        px_face = face_q$18$q;
     end
     
 endmodule // top$lanes$2$ctl
@@ -13759,6 +14143,23 @@ module top$lanes$2$ctl$bx_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$bx_q$17
+module top$lanes$2$ctl$bx_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$18
 module top$lanes$2$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -14065,6 +14466,23 @@ module top$lanes$2$ctl$by_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$by_q$17
+module top$lanes$2$ctl$by_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$18
 module top$lanes$2$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -14915,6 +15333,23 @@ module top$lanes$2$ctl$er_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$er_q$17
+module top$lanes$2$ctl$er_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$18
 module top$lanes$2$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -15221,6 +15656,23 @@ module top$lanes$2$ctl$face_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$face_q$17
+module top$lanes$2$ctl$face_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$18
 module top$lanes$2$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -15561,6 +16013,23 @@ module top$lanes$2$ctl$pad_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$pad_q$17
+module top$lanes$2$ctl$pad_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$18
 module top$lanes$2$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -16003,6 +16472,23 @@ module top$lanes$2$ctl$v_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$v_q$17
+module top$lanes$2$ctl$v_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$18
 module top$lanes$2$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -17633,6 +18119,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$17$d;
     wire  v_q$17$q;
     reg  v_q$17$clock;
+    reg  v_q$18$d;
+    wire  v_q$18$q;
+    reg  v_q$18$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -17687,6 +18176,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$17$d;
     wire  er_q$17$q;
     reg  er_q$17$clock;
+    reg  er_q$18$d;
+    wire  er_q$18$q;
+    reg  er_q$18$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -17741,6 +18233,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$17$d;
     wire  pad_q$17$q;
     reg  pad_q$17$clock;
+    reg  pad_q$18$d;
+    wire  pad_q$18$q;
+    reg  pad_q$18$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -17795,6 +18290,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$17$d;
     wire  [15:0] bx_q$17$q;
     reg  bx_q$17$clock;
+    reg  [15:0] bx_q$18$d;
+    wire  [15:0] bx_q$18$q;
+    reg  bx_q$18$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -17849,6 +18347,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$17$d;
     wire  [15:0] by_q$17$q;
     reg  by_q$17$clock;
+    reg  [15:0] by_q$18$d;
+    wire  [15:0] by_q$18$q;
+    reg  by_q$18$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -17903,6 +18404,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$17$d;
     wire  [2:0] face_q$17$q;
     reg  face_q$17$clock;
+    reg  [2:0] face_q$18$d;
+    wire  [2:0] face_q$18$q;
+    reg  face_q$18$clock;
     
     // Sub module instances
     top$lanes$3$ctl$nx_last nx_last(
@@ -18290,6 +18794,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$17$q),
         .clock(v_q$17$clock)
     );
+    top$lanes$3$ctl$v_q$18 v_q$18(
+        .d(v_q$18$d),
+        .q(v_q$18$q),
+        .clock(v_q$18$clock)
+    );
     top$lanes$3$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -18379,6 +18888,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$17$d),
         .q(er_q$17$q),
         .clock(er_q$17$clock)
+    );
+    top$lanes$3$ctl$er_q$18 er_q$18(
+        .d(er_q$18$d),
+        .q(er_q$18$q),
+        .clock(er_q$18$clock)
     );
     top$lanes$3$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -18470,6 +18984,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$17$q),
         .clock(pad_q$17$clock)
     );
+    top$lanes$3$ctl$pad_q$18 pad_q$18(
+        .d(pad_q$18$d),
+        .q(pad_q$18$q),
+        .clock(pad_q$18$clock)
+    );
     top$lanes$3$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -18559,6 +19078,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$17$d),
         .q(bx_q$17$q),
         .clock(bx_q$17$clock)
+    );
+    top$lanes$3$ctl$bx_q$18 bx_q$18(
+        .d(bx_q$18$d),
+        .q(bx_q$18$q),
+        .clock(bx_q$18$clock)
     );
     top$lanes$3$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -18650,6 +19174,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$17$q),
         .clock(by_q$17$clock)
     );
+    top$lanes$3$ctl$by_q$18 by_q$18(
+        .d(by_q$18$d),
+        .q(by_q$18$q),
+        .clock(by_q$18$clock)
+    );
     top$lanes$3$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -18739,6 +19268,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(face_q$17$d),
         .q(face_q$17$q),
         .clock(face_q$17$clock)
+    );
+    top$lanes$3$ctl$face_q$18 face_q$18(
+        .d(face_q$18$d),
+        .q(face_q$18$q),
+        .clock(face_q$18$clock)
     );
     
     // Update code
@@ -18907,6 +19441,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$clock = clock;
         by_q$17$clock = clock;
         face_q$17$clock = clock;
+        v_q$18$clock = clock;
+        er_q$18$clock = clock;
+        pad_q$18$clock = clock;
+        bx_q$18$clock = clock;
+        by_q$18$clock = clock;
+        face_q$18$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -19105,12 +19645,18 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$d = bx_q$16$q;
         by_q$17$d = by_q$16$q;
         face_q$17$d = face_q$16$q;
-        res_beat = v_q$17$q;
-        res_valid = v_q$17$q & ~pad_q$17$q;
-        px_valid = v_q$17$q & er_q$17$q & ~pad_q$17$q;
-        px_x = bx_q$17$q;
-        px_y = by_q$17$q;
-        px_face = face_q$17$q;
+        v_q$18$d = v_q$17$q;
+        er_q$18$d = er_q$17$q;
+        pad_q$18$d = pad_q$17$q;
+        bx_q$18$d = bx_q$17$q;
+        by_q$18$d = by_q$17$q;
+        face_q$18$d = face_q$17$q;
+        res_beat = v_q$18$q;
+        res_valid = v_q$18$q & ~pad_q$18$q;
+        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
+        px_x = bx_q$18$q;
+        px_y = by_q$18$q;
+        px_face = face_q$18$q;
     end
     
 endmodule // top$lanes$3$ctl
@@ -19284,6 +19830,23 @@ module top$lanes$3$ctl$bx_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$bx_q$17
+module top$lanes$3$ctl$bx_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$18
 module top$lanes$3$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -19590,6 +20153,23 @@ module top$lanes$3$ctl$by_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$by_q$17
+module top$lanes$3$ctl$by_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$18
 module top$lanes$3$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -20440,6 +21020,23 @@ module top$lanes$3$ctl$er_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$er_q$17
+module top$lanes$3$ctl$er_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$18
 module top$lanes$3$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -20746,6 +21343,23 @@ module top$lanes$3$ctl$face_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$face_q$17
+module top$lanes$3$ctl$face_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$18
 module top$lanes$3$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -21086,6 +21700,23 @@ module top$lanes$3$ctl$pad_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$pad_q$17
+module top$lanes$3$ctl$pad_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$18
 module top$lanes$3$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -21528,6 +22159,23 @@ module top$lanes$3$ctl$v_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$v_q$17
+module top$lanes$3$ctl$v_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$18
 module top$lanes$3$ctl$v_q$2(d,q,clock);
     
     // Module arguments

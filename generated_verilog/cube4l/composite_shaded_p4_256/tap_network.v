@@ -314,7 +314,7 @@ module top$lanes$0$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hf;
+    localparam  ring_less = 16'h10;
     
     // Stub signals
     reg  ring$clock;
@@ -1578,7 +1578,7 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3fb0;
+    localparam  longest_last = 16'h3faf;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -1812,38 +1812,38 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
-    reg [0:0] mem_0_0[16304:0];
-    reg [0:0] mem_0_1[16304:0];
-    reg [0:0] mem_0_2[16304:0];
-    reg [0:0] mem_0_3[16304:0];
-    reg [0:0] mem_0_4[16304:0];
-    reg [0:0] mem_0_5[16304:0];
-    reg [0:0] mem_0_6[16304:0];
-    reg [0:0] mem_0_7[16304:0];
-    reg [0:0] mem_0_8[16304:0];
-    reg [0:0] mem_0_9[16304:0];
-    reg [0:0] mem_0_10[16304:0];
-    reg [0:0] mem_0_11[16304:0];
-    reg [0:0] mem_0_12[16304:0];
-    reg [0:0] mem_0_13[16304:0];
-    reg [0:0] mem_0_14[16304:0];
-    reg [0:0] mem_0_15[16304:0];
-    reg [0:0] mem_0_16[16304:0];
-    reg [0:0] mem_0_17[16304:0];
-    reg [0:0] mem_0_18[16304:0];
-    reg [0:0] mem_0_19[16304:0];
-    reg [0:0] mem_0_20[16304:0];
-    reg [0:0] mem_0_21[16304:0];
-    reg [0:0] mem_0_22[16304:0];
-    reg [0:0] mem_0_23[16304:0];
-    reg [0:0] mem_0_24[16304:0];
-    reg [0:0] mem_0_25[16304:0];
-    reg [0:0] mem_0_26[16304:0];
-    reg [0:0] mem_0_27[16304:0];
-    reg [0:0] mem_0_28[16304:0];
-    reg [0:0] mem_0_29[16304:0];
-    reg [0:0] mem_0_30[16304:0];
-    reg [0:0] mem_0_31[16304:0];
+    reg [0:0] mem_0_0[16303:0];
+    reg [0:0] mem_0_1[16303:0];
+    reg [0:0] mem_0_2[16303:0];
+    reg [0:0] mem_0_3[16303:0];
+    reg [0:0] mem_0_4[16303:0];
+    reg [0:0] mem_0_5[16303:0];
+    reg [0:0] mem_0_6[16303:0];
+    reg [0:0] mem_0_7[16303:0];
+    reg [0:0] mem_0_8[16303:0];
+    reg [0:0] mem_0_9[16303:0];
+    reg [0:0] mem_0_10[16303:0];
+    reg [0:0] mem_0_11[16303:0];
+    reg [0:0] mem_0_12[16303:0];
+    reg [0:0] mem_0_13[16303:0];
+    reg [0:0] mem_0_14[16303:0];
+    reg [0:0] mem_0_15[16303:0];
+    reg [0:0] mem_0_16[16303:0];
+    reg [0:0] mem_0_17[16303:0];
+    reg [0:0] mem_0_18[16303:0];
+    reg [0:0] mem_0_19[16303:0];
+    reg [0:0] mem_0_20[16303:0];
+    reg [0:0] mem_0_21[16303:0];
+    reg [0:0] mem_0_22[16303:0];
+    reg [0:0] mem_0_23[16303:0];
+    reg [0:0] mem_0_24[16303:0];
+    reg [0:0] mem_0_25[16303:0];
+    reg [0:0] mem_0_26[16303:0];
+    reg [0:0] mem_0_27[16303:0];
+    reg [0:0] mem_0_28[16303:0];
+    reg [0:0] mem_0_29[16303:0];
+    reg [0:0] mem_0_30[16303:0];
+    reg [0:0] mem_0_31[16303:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
     
@@ -3396,7 +3396,7 @@ module top$lanes$1$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hf;
+    localparam  ring_less = 16'h10;
     
     // Stub signals
     reg  ring$clock;
@@ -4660,7 +4660,7 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3fb0;
+    localparam  longest_last = 16'h3faf;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -4894,38 +4894,38 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
-    reg [0:0] mem_0_0[16304:0];
-    reg [0:0] mem_0_1[16304:0];
-    reg [0:0] mem_0_2[16304:0];
-    reg [0:0] mem_0_3[16304:0];
-    reg [0:0] mem_0_4[16304:0];
-    reg [0:0] mem_0_5[16304:0];
-    reg [0:0] mem_0_6[16304:0];
-    reg [0:0] mem_0_7[16304:0];
-    reg [0:0] mem_0_8[16304:0];
-    reg [0:0] mem_0_9[16304:0];
-    reg [0:0] mem_0_10[16304:0];
-    reg [0:0] mem_0_11[16304:0];
-    reg [0:0] mem_0_12[16304:0];
-    reg [0:0] mem_0_13[16304:0];
-    reg [0:0] mem_0_14[16304:0];
-    reg [0:0] mem_0_15[16304:0];
-    reg [0:0] mem_0_16[16304:0];
-    reg [0:0] mem_0_17[16304:0];
-    reg [0:0] mem_0_18[16304:0];
-    reg [0:0] mem_0_19[16304:0];
-    reg [0:0] mem_0_20[16304:0];
-    reg [0:0] mem_0_21[16304:0];
-    reg [0:0] mem_0_22[16304:0];
-    reg [0:0] mem_0_23[16304:0];
-    reg [0:0] mem_0_24[16304:0];
-    reg [0:0] mem_0_25[16304:0];
-    reg [0:0] mem_0_26[16304:0];
-    reg [0:0] mem_0_27[16304:0];
-    reg [0:0] mem_0_28[16304:0];
-    reg [0:0] mem_0_29[16304:0];
-    reg [0:0] mem_0_30[16304:0];
-    reg [0:0] mem_0_31[16304:0];
+    reg [0:0] mem_0_0[16303:0];
+    reg [0:0] mem_0_1[16303:0];
+    reg [0:0] mem_0_2[16303:0];
+    reg [0:0] mem_0_3[16303:0];
+    reg [0:0] mem_0_4[16303:0];
+    reg [0:0] mem_0_5[16303:0];
+    reg [0:0] mem_0_6[16303:0];
+    reg [0:0] mem_0_7[16303:0];
+    reg [0:0] mem_0_8[16303:0];
+    reg [0:0] mem_0_9[16303:0];
+    reg [0:0] mem_0_10[16303:0];
+    reg [0:0] mem_0_11[16303:0];
+    reg [0:0] mem_0_12[16303:0];
+    reg [0:0] mem_0_13[16303:0];
+    reg [0:0] mem_0_14[16303:0];
+    reg [0:0] mem_0_15[16303:0];
+    reg [0:0] mem_0_16[16303:0];
+    reg [0:0] mem_0_17[16303:0];
+    reg [0:0] mem_0_18[16303:0];
+    reg [0:0] mem_0_19[16303:0];
+    reg [0:0] mem_0_20[16303:0];
+    reg [0:0] mem_0_21[16303:0];
+    reg [0:0] mem_0_22[16303:0];
+    reg [0:0] mem_0_23[16303:0];
+    reg [0:0] mem_0_24[16303:0];
+    reg [0:0] mem_0_25[16303:0];
+    reg [0:0] mem_0_26[16303:0];
+    reg [0:0] mem_0_27[16303:0];
+    reg [0:0] mem_0_28[16303:0];
+    reg [0:0] mem_0_29[16303:0];
+    reg [0:0] mem_0_30[16303:0];
+    reg [0:0] mem_0_31[16303:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
     
@@ -6478,7 +6478,7 @@ module top$lanes$2$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hf;
+    localparam  ring_less = 16'h10;
     
     // Stub signals
     reg  ring$clock;
@@ -7742,7 +7742,7 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3fb0;
+    localparam  longest_last = 16'h3faf;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -7976,38 +7976,38 @@ module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
-    reg [0:0] mem_0_0[16304:0];
-    reg [0:0] mem_0_1[16304:0];
-    reg [0:0] mem_0_2[16304:0];
-    reg [0:0] mem_0_3[16304:0];
-    reg [0:0] mem_0_4[16304:0];
-    reg [0:0] mem_0_5[16304:0];
-    reg [0:0] mem_0_6[16304:0];
-    reg [0:0] mem_0_7[16304:0];
-    reg [0:0] mem_0_8[16304:0];
-    reg [0:0] mem_0_9[16304:0];
-    reg [0:0] mem_0_10[16304:0];
-    reg [0:0] mem_0_11[16304:0];
-    reg [0:0] mem_0_12[16304:0];
-    reg [0:0] mem_0_13[16304:0];
-    reg [0:0] mem_0_14[16304:0];
-    reg [0:0] mem_0_15[16304:0];
-    reg [0:0] mem_0_16[16304:0];
-    reg [0:0] mem_0_17[16304:0];
-    reg [0:0] mem_0_18[16304:0];
-    reg [0:0] mem_0_19[16304:0];
-    reg [0:0] mem_0_20[16304:0];
-    reg [0:0] mem_0_21[16304:0];
-    reg [0:0] mem_0_22[16304:0];
-    reg [0:0] mem_0_23[16304:0];
-    reg [0:0] mem_0_24[16304:0];
-    reg [0:0] mem_0_25[16304:0];
-    reg [0:0] mem_0_26[16304:0];
-    reg [0:0] mem_0_27[16304:0];
-    reg [0:0] mem_0_28[16304:0];
-    reg [0:0] mem_0_29[16304:0];
-    reg [0:0] mem_0_30[16304:0];
-    reg [0:0] mem_0_31[16304:0];
+    reg [0:0] mem_0_0[16303:0];
+    reg [0:0] mem_0_1[16303:0];
+    reg [0:0] mem_0_2[16303:0];
+    reg [0:0] mem_0_3[16303:0];
+    reg [0:0] mem_0_4[16303:0];
+    reg [0:0] mem_0_5[16303:0];
+    reg [0:0] mem_0_6[16303:0];
+    reg [0:0] mem_0_7[16303:0];
+    reg [0:0] mem_0_8[16303:0];
+    reg [0:0] mem_0_9[16303:0];
+    reg [0:0] mem_0_10[16303:0];
+    reg [0:0] mem_0_11[16303:0];
+    reg [0:0] mem_0_12[16303:0];
+    reg [0:0] mem_0_13[16303:0];
+    reg [0:0] mem_0_14[16303:0];
+    reg [0:0] mem_0_15[16303:0];
+    reg [0:0] mem_0_16[16303:0];
+    reg [0:0] mem_0_17[16303:0];
+    reg [0:0] mem_0_18[16303:0];
+    reg [0:0] mem_0_19[16303:0];
+    reg [0:0] mem_0_20[16303:0];
+    reg [0:0] mem_0_21[16303:0];
+    reg [0:0] mem_0_22[16303:0];
+    reg [0:0] mem_0_23[16303:0];
+    reg [0:0] mem_0_24[16303:0];
+    reg [0:0] mem_0_25[16303:0];
+    reg [0:0] mem_0_26[16303:0];
+    reg [0:0] mem_0_27[16303:0];
+    reg [0:0] mem_0_28[16303:0];
+    reg [0:0] mem_0_29[16303:0];
+    reg [0:0] mem_0_30[16303:0];
+    reg [0:0] mem_0_31[16303:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
     
@@ -9560,7 +9560,7 @@ module top$lanes$3$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hf;
+    localparam  ring_less = 16'h10;
     
     // Stub signals
     reg  ring$clock;
@@ -10824,7 +10824,7 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3fb0;
+    localparam  longest_last = 16'h3faf;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -11058,38 +11058,38 @@ module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
-    reg [0:0] mem_0_0[16304:0];
-    reg [0:0] mem_0_1[16304:0];
-    reg [0:0] mem_0_2[16304:0];
-    reg [0:0] mem_0_3[16304:0];
-    reg [0:0] mem_0_4[16304:0];
-    reg [0:0] mem_0_5[16304:0];
-    reg [0:0] mem_0_6[16304:0];
-    reg [0:0] mem_0_7[16304:0];
-    reg [0:0] mem_0_8[16304:0];
-    reg [0:0] mem_0_9[16304:0];
-    reg [0:0] mem_0_10[16304:0];
-    reg [0:0] mem_0_11[16304:0];
-    reg [0:0] mem_0_12[16304:0];
-    reg [0:0] mem_0_13[16304:0];
-    reg [0:0] mem_0_14[16304:0];
-    reg [0:0] mem_0_15[16304:0];
-    reg [0:0] mem_0_16[16304:0];
-    reg [0:0] mem_0_17[16304:0];
-    reg [0:0] mem_0_18[16304:0];
-    reg [0:0] mem_0_19[16304:0];
-    reg [0:0] mem_0_20[16304:0];
-    reg [0:0] mem_0_21[16304:0];
-    reg [0:0] mem_0_22[16304:0];
-    reg [0:0] mem_0_23[16304:0];
-    reg [0:0] mem_0_24[16304:0];
-    reg [0:0] mem_0_25[16304:0];
-    reg [0:0] mem_0_26[16304:0];
-    reg [0:0] mem_0_27[16304:0];
-    reg [0:0] mem_0_28[16304:0];
-    reg [0:0] mem_0_29[16304:0];
-    reg [0:0] mem_0_30[16304:0];
-    reg [0:0] mem_0_31[16304:0];
+    reg [0:0] mem_0_0[16303:0];
+    reg [0:0] mem_0_1[16303:0];
+    reg [0:0] mem_0_2[16303:0];
+    reg [0:0] mem_0_3[16303:0];
+    reg [0:0] mem_0_4[16303:0];
+    reg [0:0] mem_0_5[16303:0];
+    reg [0:0] mem_0_6[16303:0];
+    reg [0:0] mem_0_7[16303:0];
+    reg [0:0] mem_0_8[16303:0];
+    reg [0:0] mem_0_9[16303:0];
+    reg [0:0] mem_0_10[16303:0];
+    reg [0:0] mem_0_11[16303:0];
+    reg [0:0] mem_0_12[16303:0];
+    reg [0:0] mem_0_13[16303:0];
+    reg [0:0] mem_0_14[16303:0];
+    reg [0:0] mem_0_15[16303:0];
+    reg [0:0] mem_0_16[16303:0];
+    reg [0:0] mem_0_17[16303:0];
+    reg [0:0] mem_0_18[16303:0];
+    reg [0:0] mem_0_19[16303:0];
+    reg [0:0] mem_0_20[16303:0];
+    reg [0:0] mem_0_21[16303:0];
+    reg [0:0] mem_0_22[16303:0];
+    reg [0:0] mem_0_23[16303:0];
+    reg [0:0] mem_0_24[16303:0];
+    reg [0:0] mem_0_25[16303:0];
+    reg [0:0] mem_0_26[16303:0];
+    reg [0:0] mem_0_27[16303:0];
+    reg [0:0] mem_0_28[16303:0];
+    reg [0:0] mem_0_29[16303:0];
+    reg [0:0] mem_0_30[16303:0];
+    reg [0:0] mem_0_31[16303:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
     

@@ -1058,6 +1058,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$17$d;
     wire  v_q$17$q;
     reg  v_q$17$clock;
+    reg  v_q$18$d;
+    wire  v_q$18$q;
+    reg  v_q$18$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -1112,6 +1115,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$17$d;
     wire  er_q$17$q;
     reg  er_q$17$clock;
+    reg  er_q$18$d;
+    wire  er_q$18$q;
+    reg  er_q$18$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -1166,6 +1172,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$17$d;
     wire  pad_q$17$q;
     reg  pad_q$17$clock;
+    reg  pad_q$18$d;
+    wire  pad_q$18$q;
+    reg  pad_q$18$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -1220,6 +1229,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$17$d;
     wire  [15:0] bx_q$17$q;
     reg  bx_q$17$clock;
+    reg  [15:0] bx_q$18$d;
+    wire  [15:0] bx_q$18$q;
+    reg  bx_q$18$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -1274,6 +1286,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$17$d;
     wire  [15:0] by_q$17$q;
     reg  by_q$17$clock;
+    reg  [15:0] by_q$18$d;
+    wire  [15:0] by_q$18$q;
+    reg  by_q$18$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -1328,6 +1343,9 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$17$d;
     wire  [2:0] face_q$17$q;
     reg  face_q$17$clock;
+    reg  [2:0] face_q$18$d;
+    wire  [2:0] face_q$18$q;
+    reg  face_q$18$clock;
     
     // Sub module instances
     top$lanes$0$ctl$nx_last nx_last(
@@ -1715,6 +1733,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$17$q),
         .clock(v_q$17$clock)
     );
+    top$lanes$0$ctl$v_q$18 v_q$18(
+        .d(v_q$18$d),
+        .q(v_q$18$q),
+        .clock(v_q$18$clock)
+    );
     top$lanes$0$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -1804,6 +1827,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$17$d),
         .q(er_q$17$q),
         .clock(er_q$17$clock)
+    );
+    top$lanes$0$ctl$er_q$18 er_q$18(
+        .d(er_q$18$d),
+        .q(er_q$18$q),
+        .clock(er_q$18$clock)
     );
     top$lanes$0$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -1895,6 +1923,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$17$q),
         .clock(pad_q$17$clock)
     );
+    top$lanes$0$ctl$pad_q$18 pad_q$18(
+        .d(pad_q$18$d),
+        .q(pad_q$18$q),
+        .clock(pad_q$18$clock)
+    );
     top$lanes$0$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -1984,6 +2017,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$17$d),
         .q(bx_q$17$q),
         .clock(bx_q$17$clock)
+    );
+    top$lanes$0$ctl$bx_q$18 bx_q$18(
+        .d(bx_q$18$d),
+        .q(bx_q$18$q),
+        .clock(bx_q$18$clock)
     );
     top$lanes$0$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -2075,6 +2113,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$17$q),
         .clock(by_q$17$clock)
     );
+    top$lanes$0$ctl$by_q$18 by_q$18(
+        .d(by_q$18$d),
+        .q(by_q$18$q),
+        .clock(by_q$18$clock)
+    );
     top$lanes$0$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -2164,6 +2207,11 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(face_q$17$d),
         .q(face_q$17$q),
         .clock(face_q$17$clock)
+    );
+    top$lanes$0$ctl$face_q$18 face_q$18(
+        .d(face_q$18$d),
+        .q(face_q$18$q),
+        .clock(face_q$18$clock)
     );
     
     // Update code
@@ -2332,6 +2380,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$clock = clock;
         by_q$17$clock = clock;
         face_q$17$clock = clock;
+        v_q$18$clock = clock;
+        er_q$18$clock = clock;
+        pad_q$18$clock = clock;
+        bx_q$18$clock = clock;
+        by_q$18$clock = clock;
+        face_q$18$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -2530,12 +2584,18 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$d = bx_q$16$q;
         by_q$17$d = by_q$16$q;
         face_q$17$d = face_q$16$q;
-        res_beat = v_q$17$q;
-        res_valid = v_q$17$q & ~pad_q$17$q;
-        px_valid = v_q$17$q & er_q$17$q & ~pad_q$17$q;
-        px_x = bx_q$17$q;
-        px_y = by_q$17$q;
-        px_face = face_q$17$q;
+        v_q$18$d = v_q$17$q;
+        er_q$18$d = er_q$17$q;
+        pad_q$18$d = pad_q$17$q;
+        bx_q$18$d = bx_q$17$q;
+        by_q$18$d = by_q$17$q;
+        face_q$18$d = face_q$17$q;
+        res_beat = v_q$18$q;
+        res_valid = v_q$18$q & ~pad_q$18$q;
+        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
+        px_x = bx_q$18$q;
+        px_y = by_q$18$q;
+        px_face = face_q$18$q;
     end
     
 endmodule // top$lanes$0$ctl
@@ -2709,6 +2769,23 @@ module top$lanes$0$ctl$bx_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$bx_q$17
+module top$lanes$0$ctl$bx_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$18
 module top$lanes$0$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -3015,6 +3092,23 @@ module top$lanes$0$ctl$by_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$by_q$17
+module top$lanes$0$ctl$by_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$18
 module top$lanes$0$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -3865,6 +3959,23 @@ module top$lanes$0$ctl$er_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$er_q$17
+module top$lanes$0$ctl$er_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$18
 module top$lanes$0$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -4171,6 +4282,23 @@ module top$lanes$0$ctl$face_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$17
+module top$lanes$0$ctl$face_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$18
 module top$lanes$0$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -4511,6 +4639,23 @@ module top$lanes$0$ctl$pad_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$17
+module top$lanes$0$ctl$pad_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$18
 module top$lanes$0$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -4953,6 +5098,23 @@ module top$lanes$0$ctl$v_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$17
+module top$lanes$0$ctl$v_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$18
 module top$lanes$0$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -6558,6 +6720,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$17$d;
     wire  v_q$17$q;
     reg  v_q$17$clock;
+    reg  v_q$18$d;
+    wire  v_q$18$q;
+    reg  v_q$18$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -6612,6 +6777,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$17$d;
     wire  er_q$17$q;
     reg  er_q$17$clock;
+    reg  er_q$18$d;
+    wire  er_q$18$q;
+    reg  er_q$18$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -6666,6 +6834,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$17$d;
     wire  pad_q$17$q;
     reg  pad_q$17$clock;
+    reg  pad_q$18$d;
+    wire  pad_q$18$q;
+    reg  pad_q$18$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -6720,6 +6891,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$17$d;
     wire  [15:0] bx_q$17$q;
     reg  bx_q$17$clock;
+    reg  [15:0] bx_q$18$d;
+    wire  [15:0] bx_q$18$q;
+    reg  bx_q$18$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -6774,6 +6948,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$17$d;
     wire  [15:0] by_q$17$q;
     reg  by_q$17$clock;
+    reg  [15:0] by_q$18$d;
+    wire  [15:0] by_q$18$q;
+    reg  by_q$18$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -6828,6 +7005,9 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$17$d;
     wire  [2:0] face_q$17$q;
     reg  face_q$17$clock;
+    reg  [2:0] face_q$18$d;
+    wire  [2:0] face_q$18$q;
+    reg  face_q$18$clock;
     
     // Sub module instances
     top$lanes$1$ctl$nx_last nx_last(
@@ -7215,6 +7395,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$17$q),
         .clock(v_q$17$clock)
     );
+    top$lanes$1$ctl$v_q$18 v_q$18(
+        .d(v_q$18$d),
+        .q(v_q$18$q),
+        .clock(v_q$18$clock)
+    );
     top$lanes$1$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -7304,6 +7489,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$17$d),
         .q(er_q$17$q),
         .clock(er_q$17$clock)
+    );
+    top$lanes$1$ctl$er_q$18 er_q$18(
+        .d(er_q$18$d),
+        .q(er_q$18$q),
+        .clock(er_q$18$clock)
     );
     top$lanes$1$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -7395,6 +7585,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$17$q),
         .clock(pad_q$17$clock)
     );
+    top$lanes$1$ctl$pad_q$18 pad_q$18(
+        .d(pad_q$18$d),
+        .q(pad_q$18$q),
+        .clock(pad_q$18$clock)
+    );
     top$lanes$1$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -7484,6 +7679,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$17$d),
         .q(bx_q$17$q),
         .clock(bx_q$17$clock)
+    );
+    top$lanes$1$ctl$bx_q$18 bx_q$18(
+        .d(bx_q$18$d),
+        .q(bx_q$18$q),
+        .clock(bx_q$18$clock)
     );
     top$lanes$1$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -7575,6 +7775,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$17$q),
         .clock(by_q$17$clock)
     );
+    top$lanes$1$ctl$by_q$18 by_q$18(
+        .d(by_q$18$d),
+        .q(by_q$18$q),
+        .clock(by_q$18$clock)
+    );
     top$lanes$1$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -7664,6 +7869,11 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(face_q$17$d),
         .q(face_q$17$q),
         .clock(face_q$17$clock)
+    );
+    top$lanes$1$ctl$face_q$18 face_q$18(
+        .d(face_q$18$d),
+        .q(face_q$18$q),
+        .clock(face_q$18$clock)
     );
     
     // Update code
@@ -7832,6 +8042,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$clock = clock;
         by_q$17$clock = clock;
         face_q$17$clock = clock;
+        v_q$18$clock = clock;
+        er_q$18$clock = clock;
+        pad_q$18$clock = clock;
+        bx_q$18$clock = clock;
+        by_q$18$clock = clock;
+        face_q$18$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -8030,12 +8246,18 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$d = bx_q$16$q;
         by_q$17$d = by_q$16$q;
         face_q$17$d = face_q$16$q;
-        res_beat = v_q$17$q;
-        res_valid = v_q$17$q & ~pad_q$17$q;
-        px_valid = v_q$17$q & er_q$17$q & ~pad_q$17$q;
-        px_x = bx_q$17$q;
-        px_y = by_q$17$q;
-        px_face = face_q$17$q;
+        v_q$18$d = v_q$17$q;
+        er_q$18$d = er_q$17$q;
+        pad_q$18$d = pad_q$17$q;
+        bx_q$18$d = bx_q$17$q;
+        by_q$18$d = by_q$17$q;
+        face_q$18$d = face_q$17$q;
+        res_beat = v_q$18$q;
+        res_valid = v_q$18$q & ~pad_q$18$q;
+        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
+        px_x = bx_q$18$q;
+        px_y = by_q$18$q;
+        px_face = face_q$18$q;
     end
     
 endmodule // top$lanes$1$ctl
@@ -8209,6 +8431,23 @@ module top$lanes$1$ctl$bx_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$bx_q$17
+module top$lanes$1$ctl$bx_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$18
 module top$lanes$1$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -8515,6 +8754,23 @@ module top$lanes$1$ctl$by_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$by_q$17
+module top$lanes$1$ctl$by_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$18
 module top$lanes$1$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -9365,6 +9621,23 @@ module top$lanes$1$ctl$er_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$er_q$17
+module top$lanes$1$ctl$er_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$18
 module top$lanes$1$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -9671,6 +9944,23 @@ module top$lanes$1$ctl$face_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$17
+module top$lanes$1$ctl$face_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$18
 module top$lanes$1$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -10011,6 +10301,23 @@ module top$lanes$1$ctl$pad_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$17
+module top$lanes$1$ctl$pad_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$18
 module top$lanes$1$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -10453,6 +10760,23 @@ module top$lanes$1$ctl$v_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$17
+module top$lanes$1$ctl$v_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$18
 module top$lanes$1$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -12058,6 +12382,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$17$d;
     wire  v_q$17$q;
     reg  v_q$17$clock;
+    reg  v_q$18$d;
+    wire  v_q$18$q;
+    reg  v_q$18$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -12112,6 +12439,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$17$d;
     wire  er_q$17$q;
     reg  er_q$17$clock;
+    reg  er_q$18$d;
+    wire  er_q$18$q;
+    reg  er_q$18$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -12166,6 +12496,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$17$d;
     wire  pad_q$17$q;
     reg  pad_q$17$clock;
+    reg  pad_q$18$d;
+    wire  pad_q$18$q;
+    reg  pad_q$18$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -12220,6 +12553,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$17$d;
     wire  [15:0] bx_q$17$q;
     reg  bx_q$17$clock;
+    reg  [15:0] bx_q$18$d;
+    wire  [15:0] bx_q$18$q;
+    reg  bx_q$18$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -12274,6 +12610,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$17$d;
     wire  [15:0] by_q$17$q;
     reg  by_q$17$clock;
+    reg  [15:0] by_q$18$d;
+    wire  [15:0] by_q$18$q;
+    reg  by_q$18$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -12328,6 +12667,9 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$17$d;
     wire  [2:0] face_q$17$q;
     reg  face_q$17$clock;
+    reg  [2:0] face_q$18$d;
+    wire  [2:0] face_q$18$q;
+    reg  face_q$18$clock;
     
     // Sub module instances
     top$lanes$2$ctl$nx_last nx_last(
@@ -12715,6 +13057,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$17$q),
         .clock(v_q$17$clock)
     );
+    top$lanes$2$ctl$v_q$18 v_q$18(
+        .d(v_q$18$d),
+        .q(v_q$18$q),
+        .clock(v_q$18$clock)
+    );
     top$lanes$2$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -12804,6 +13151,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$17$d),
         .q(er_q$17$q),
         .clock(er_q$17$clock)
+    );
+    top$lanes$2$ctl$er_q$18 er_q$18(
+        .d(er_q$18$d),
+        .q(er_q$18$q),
+        .clock(er_q$18$clock)
     );
     top$lanes$2$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -12895,6 +13247,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$17$q),
         .clock(pad_q$17$clock)
     );
+    top$lanes$2$ctl$pad_q$18 pad_q$18(
+        .d(pad_q$18$d),
+        .q(pad_q$18$q),
+        .clock(pad_q$18$clock)
+    );
     top$lanes$2$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -12984,6 +13341,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$17$d),
         .q(bx_q$17$q),
         .clock(bx_q$17$clock)
+    );
+    top$lanes$2$ctl$bx_q$18 bx_q$18(
+        .d(bx_q$18$d),
+        .q(bx_q$18$q),
+        .clock(bx_q$18$clock)
     );
     top$lanes$2$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -13075,6 +13437,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$17$q),
         .clock(by_q$17$clock)
     );
+    top$lanes$2$ctl$by_q$18 by_q$18(
+        .d(by_q$18$d),
+        .q(by_q$18$q),
+        .clock(by_q$18$clock)
+    );
     top$lanes$2$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -13164,6 +13531,11 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(face_q$17$d),
         .q(face_q$17$q),
         .clock(face_q$17$clock)
+    );
+    top$lanes$2$ctl$face_q$18 face_q$18(
+        .d(face_q$18$d),
+        .q(face_q$18$q),
+        .clock(face_q$18$clock)
     );
     
     // Update code
@@ -13332,6 +13704,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$clock = clock;
         by_q$17$clock = clock;
         face_q$17$clock = clock;
+        v_q$18$clock = clock;
+        er_q$18$clock = clock;
+        pad_q$18$clock = clock;
+        bx_q$18$clock = clock;
+        by_q$18$clock = clock;
+        face_q$18$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -13530,12 +13908,18 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$d = bx_q$16$q;
         by_q$17$d = by_q$16$q;
         face_q$17$d = face_q$16$q;
-        res_beat = v_q$17$q;
-        res_valid = v_q$17$q & ~pad_q$17$q;
-        px_valid = v_q$17$q & er_q$17$q & ~pad_q$17$q;
-        px_x = bx_q$17$q;
-        px_y = by_q$17$q;
-        px_face = face_q$17$q;
+        v_q$18$d = v_q$17$q;
+        er_q$18$d = er_q$17$q;
+        pad_q$18$d = pad_q$17$q;
+        bx_q$18$d = bx_q$17$q;
+        by_q$18$d = by_q$17$q;
+        face_q$18$d = face_q$17$q;
+        res_beat = v_q$18$q;
+        res_valid = v_q$18$q & ~pad_q$18$q;
+        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
+        px_x = bx_q$18$q;
+        px_y = by_q$18$q;
+        px_face = face_q$18$q;
     end
     
 endmodule // top$lanes$2$ctl
@@ -13709,6 +14093,23 @@ module top$lanes$2$ctl$bx_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$bx_q$17
+module top$lanes$2$ctl$bx_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$18
 module top$lanes$2$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -14015,6 +14416,23 @@ module top$lanes$2$ctl$by_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$by_q$17
+module top$lanes$2$ctl$by_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$18
 module top$lanes$2$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -14865,6 +15283,23 @@ module top$lanes$2$ctl$er_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$er_q$17
+module top$lanes$2$ctl$er_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$18
 module top$lanes$2$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -15171,6 +15606,23 @@ module top$lanes$2$ctl$face_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$face_q$17
+module top$lanes$2$ctl$face_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$18
 module top$lanes$2$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -15511,6 +15963,23 @@ module top$lanes$2$ctl$pad_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$pad_q$17
+module top$lanes$2$ctl$pad_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$18
 module top$lanes$2$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -15953,6 +16422,23 @@ module top$lanes$2$ctl$v_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$v_q$17
+module top$lanes$2$ctl$v_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$18
 module top$lanes$2$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -17558,6 +18044,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$17$d;
     wire  v_q$17$q;
     reg  v_q$17$clock;
+    reg  v_q$18$d;
+    wire  v_q$18$q;
+    reg  v_q$18$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -17612,6 +18101,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$17$d;
     wire  er_q$17$q;
     reg  er_q$17$clock;
+    reg  er_q$18$d;
+    wire  er_q$18$q;
+    reg  er_q$18$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -17666,6 +18158,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$17$d;
     wire  pad_q$17$q;
     reg  pad_q$17$clock;
+    reg  pad_q$18$d;
+    wire  pad_q$18$q;
+    reg  pad_q$18$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -17720,6 +18215,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$17$d;
     wire  [15:0] bx_q$17$q;
     reg  bx_q$17$clock;
+    reg  [15:0] bx_q$18$d;
+    wire  [15:0] bx_q$18$q;
+    reg  bx_q$18$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -17774,6 +18272,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$17$d;
     wire  [15:0] by_q$17$q;
     reg  by_q$17$clock;
+    reg  [15:0] by_q$18$d;
+    wire  [15:0] by_q$18$q;
+    reg  by_q$18$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -17828,6 +18329,9 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$17$d;
     wire  [2:0] face_q$17$q;
     reg  face_q$17$clock;
+    reg  [2:0] face_q$18$d;
+    wire  [2:0] face_q$18$q;
+    reg  face_q$18$clock;
     
     // Sub module instances
     top$lanes$3$ctl$nx_last nx_last(
@@ -18215,6 +18719,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$17$q),
         .clock(v_q$17$clock)
     );
+    top$lanes$3$ctl$v_q$18 v_q$18(
+        .d(v_q$18$d),
+        .q(v_q$18$q),
+        .clock(v_q$18$clock)
+    );
     top$lanes$3$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -18304,6 +18813,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$17$d),
         .q(er_q$17$q),
         .clock(er_q$17$clock)
+    );
+    top$lanes$3$ctl$er_q$18 er_q$18(
+        .d(er_q$18$d),
+        .q(er_q$18$q),
+        .clock(er_q$18$clock)
     );
     top$lanes$3$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -18395,6 +18909,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$17$q),
         .clock(pad_q$17$clock)
     );
+    top$lanes$3$ctl$pad_q$18 pad_q$18(
+        .d(pad_q$18$d),
+        .q(pad_q$18$q),
+        .clock(pad_q$18$clock)
+    );
     top$lanes$3$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -18484,6 +19003,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$17$d),
         .q(bx_q$17$q),
         .clock(bx_q$17$clock)
+    );
+    top$lanes$3$ctl$bx_q$18 bx_q$18(
+        .d(bx_q$18$d),
+        .q(bx_q$18$q),
+        .clock(bx_q$18$clock)
     );
     top$lanes$3$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -18575,6 +19099,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$17$q),
         .clock(by_q$17$clock)
     );
+    top$lanes$3$ctl$by_q$18 by_q$18(
+        .d(by_q$18$d),
+        .q(by_q$18$q),
+        .clock(by_q$18$clock)
+    );
     top$lanes$3$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -18664,6 +19193,11 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(face_q$17$d),
         .q(face_q$17$q),
         .clock(face_q$17$clock)
+    );
+    top$lanes$3$ctl$face_q$18 face_q$18(
+        .d(face_q$18$d),
+        .q(face_q$18$q),
+        .clock(face_q$18$clock)
     );
     
     // Update code
@@ -18832,6 +19366,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$clock = clock;
         by_q$17$clock = clock;
         face_q$17$clock = clock;
+        v_q$18$clock = clock;
+        er_q$18$clock = clock;
+        pad_q$18$clock = clock;
+        bx_q$18$clock = clock;
+        by_q$18$clock = clock;
+        face_q$18$clock = clock;
         x_q$0$d = x;
         y_q$0$d = y;
         sr_q$0$d = sr;
@@ -19030,12 +19570,18 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$17$d = bx_q$16$q;
         by_q$17$d = by_q$16$q;
         face_q$17$d = face_q$16$q;
-        res_beat = v_q$17$q;
-        res_valid = v_q$17$q & ~pad_q$17$q;
-        px_valid = v_q$17$q & er_q$17$q & ~pad_q$17$q;
-        px_x = bx_q$17$q;
-        px_y = by_q$17$q;
-        px_face = face_q$17$q;
+        v_q$18$d = v_q$17$q;
+        er_q$18$d = er_q$17$q;
+        pad_q$18$d = pad_q$17$q;
+        bx_q$18$d = bx_q$17$q;
+        by_q$18$d = by_q$17$q;
+        face_q$18$d = face_q$17$q;
+        res_beat = v_q$18$q;
+        res_valid = v_q$18$q & ~pad_q$18$q;
+        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
+        px_x = bx_q$18$q;
+        px_y = by_q$18$q;
+        px_face = face_q$18$q;
     end
     
 endmodule // top$lanes$3$ctl
@@ -19209,6 +19755,23 @@ module top$lanes$3$ctl$bx_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$bx_q$17
+module top$lanes$3$ctl$bx_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$18
 module top$lanes$3$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -19515,6 +20078,23 @@ module top$lanes$3$ctl$by_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$by_q$17
+module top$lanes$3$ctl$by_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$18
 module top$lanes$3$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -20365,6 +20945,23 @@ module top$lanes$3$ctl$er_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$er_q$17
+module top$lanes$3$ctl$er_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$18
 module top$lanes$3$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -20671,6 +21268,23 @@ module top$lanes$3$ctl$face_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$face_q$17
+module top$lanes$3$ctl$face_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$18
 module top$lanes$3$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -21011,6 +21625,23 @@ module top$lanes$3$ctl$pad_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$pad_q$17
+module top$lanes$3$ctl$pad_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$18
 module top$lanes$3$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -21453,6 +22084,23 @@ module top$lanes$3$ctl$v_q$17(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$v_q$17
+module top$lanes$3$ctl$v_q$18(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$18
 module top$lanes$3$ctl$v_q$2(d,q,clock);
     
     // Module arguments

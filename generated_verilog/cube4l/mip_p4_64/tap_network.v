@@ -314,7 +314,7 @@ module top$lanes$0$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hf;
+    localparam  ring_less = 16'h10;
     
     // Stub signals
     reg  ring$clock;
@@ -1578,7 +1578,7 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3e0;
+    localparam  longest_last = 16'h3df;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
@@ -1812,7 +1812,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
-    reg [7:0] mem_0_0[992:0];
+    reg [7:0] mem_0_0[991:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
     
@@ -3303,7 +3303,7 @@ module top$lanes$1$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hf;
+    localparam  ring_less = 16'h10;
     
     // Stub signals
     reg  ring$clock;
@@ -4567,7 +4567,7 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3e0;
+    localparam  longest_last = 16'h3df;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
@@ -4801,7 +4801,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
-    reg [7:0] mem_0_0[992:0];
+    reg [7:0] mem_0_0[991:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
     
@@ -6292,7 +6292,7 @@ module top$lanes$2$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hf;
+    localparam  ring_less = 16'h10;
     
     // Stub signals
     reg  ring$clock;
@@ -7556,7 +7556,7 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3e0;
+    localparam  longest_last = 16'h3df;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
@@ -7790,7 +7790,7 @@ module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
-    reg [7:0] mem_0_0[992:0];
+    reg [7:0] mem_0_0[991:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
     
@@ -9281,7 +9281,7 @@ module top$lanes$3$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     localparam  pick$6 = 15'b1000000000000;
     localparam  pick$7 = 15'b1000;
     localparam  pick$8 = 15'b100;
-    localparam  ring_less = 16'hf;
+    localparam  ring_less = 16'h10;
     
     // Stub signals
     reg  ring$clock;
@@ -10545,7 +10545,7 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
     // Constant declarations
     localparam  flip = 16'h1;
-    localparam  longest_last = 16'h3e0;
+    localparam  longest_last = 16'h3df;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff;
     
@@ -10779,7 +10779,7 @@ module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
-    reg [7:0] mem_0_0[992:0];
+    reg [7:0] mem_0_0[991:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
     

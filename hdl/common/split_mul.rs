@@ -1,0 +1,52 @@
+//! `mul(a, b) = round(a*b / (2^bits - 1))` for unorm words over two
+//! registers, bit for bit as `golden_model::fixed::mul_unorm`: the 16x16
+//! product alone into a register (the multiplier's clock holds no carry
+//! chain), then its rounding half (`t = a*b + 2^(bits-1)`) into a second;
+//! `y = (t + (t >> bits)) >> bits` leaves combinationally from that
+//! register two clocks after `a` and `b`. [`super::piped_mul`]'s multiplier
+//! with the product's clock cut in two, for the compositor's over operator.
+
+use rust_hdl::prelude::*;
+
+/// Clocks from `a` and `b` to `y`.
+pub const LATENCY: usize = 2;
+
+#[derive(LogicBlock)]
+pub struct SplitMulUnorm {
+    pub clock: Signal<In, Clock>,
+    pub a: Signal<In, Bits<16>>,
+    pub b: Signal<In, Bits<16>>,
+    /// The product of `a` and `b` of [`LATENCY`] clocks before.
+    pub y: Signal<Out, Bits<16>>,
+    half: Constant<Bits<32>>,
+    shift: Constant<Bits<8>>,
+    p: DFF<Bits<32>>,
+    t: DFF<Bits<32>>,
+}
+
+impl SplitMulUnorm {
+    pub fn new(bits: u32) -> SplitMulUnorm {
+        SplitMulUnorm {
+            clock: Default::default(),
+            a: Default::default(),
+            b: Default::default(),
+            y: Default::default(),
+            half: Constant::new((1u64 << (bits - 1)).to_bits()),
+            shift: Constant::new((bits as u64).to_bits()),
+            p: Default::default(),
+            t: Default::default(),
+        }
+    }
+}
+
+impl Logic for SplitMulUnorm {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, p, t);
+        self.p.d.next = self.a.val() * self.b.val();
+        self.t.d.next = self.p.q.val() + self.half.val();
+        self.y.next = bit_cast::<16, 32>(
+            (self.t.q.val() + (self.t.q.val() >> self.shift.val())) >> self.shift.val(),
+        );
+    }
+}
