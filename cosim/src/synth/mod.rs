@@ -4,7 +4,7 @@
 //! LFE5U-85F.
 //!
 //! Resource counts come from yosys `stat` after the target's flow:
-//! `synth_ice40 -dsp` (SB_LUT4, SB_DFF*, SB_RAM40_4K, SB_MAC16),
+//! `synth_ice40 -dsp -abc9` (SB_LUT4, SB_DFF*, SB_RAM40_4K, SB_MAC16),
 //! `synth_ecp5 -noiopad` (LUT4, TRELLIS_FF, DP16KD, MULT18X18D; run with the
 //! PyPI build of yosys, as Debian's 0.23 maps ECP5 far worse),
 //! `synth_xilinx -family xc7` (LUT1-6, FD*, RAMB18E1/RAMB36E1, DSP48E1) or
@@ -63,7 +63,7 @@ impl Target {
 
     fn script(self) -> &'static str {
         match self {
-            Target::Ice40 => "synth_ice40 -dsp -top top -json synth.json",
+            Target::Ice40 => "synth_ice40 -dsp -abc9 -top top -json synth.json",
             Target::Ecp5 => "synth_ecp5 -noiopad -top top -json synth.json",
             Target::Xilinx => "synth_xilinx -family xc7 -top top",
             Target::Generic => "synth -flatten -top top",
@@ -374,7 +374,7 @@ fn place_and_route(dir: &Path, files: &[String], options: &Pnr) -> Result<timing
     let top_v = std::fs::read_to_string(dir.join("top.v")).map_err(|e| e.to_string())?;
     std::fs::write(dir.join("fmax_top.v"), fmax_wrapper(&top_v)).map_err(|e| e.to_string())?;
     let script = format!(
-        "read_verilog -sv fmax_top.v {}; synth_ice40 -dsp -top fmax_top -json fmax.json",
+        "read_verilog -sv fmax_top.v {}; synth_ice40 -dsp -abc9 -top fmax_top -json fmax.json",
         files.join(" ")
     );
     run_tool(
