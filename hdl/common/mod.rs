@@ -1,7 +1,7 @@
 //! What both architectures build from: [`lerp`] (linear interpolation),
 //! [`over`] (the over operator, fused for the RPC's one-clock loop), the
-//! pipelined [`piped_mul`] (the exact unorm multiplier; [`split_mul`], its
-//! product's clock cut in two) and [`piped_over`],
+//! pipelined [`split_mul`] (the exact unorm multiplier, its product and its
+//! rounding in clocks of their own) and [`piped_over`],
 //! [`delay_line`] (and [`registered_line`], its output a register, and
 //! [`banked_line`], a register at each block RAM), [`ram`] (block RAM as
 //! deep as the scene needs) and
@@ -21,7 +21,6 @@ pub mod lighting;
 pub mod mode_class;
 pub mod normal_quantizer;
 pub mod over;
-pub mod piped_mul;
 pub mod piped_over;
 pub mod ram;
 pub mod registered_line;

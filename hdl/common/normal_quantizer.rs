@@ -41,12 +41,24 @@ pub struct NormalQuantizer {
     s_q: DFF<Bits<8>>,
     neg_q: [DFF<Bit>; 3],
     mag_q: [DFF<Bits<32>>; 3],
-    half: Signal<Local, Bits<32>>,
+    /// Stage 1: `m` with every bit below its leading one set, and the
+    /// rounding halves from it (`2^(s-1)`, and `2^(s-1) - 1` for a negative
+    /// component), so that stage 2 holds one adder and no shift.
+    smear: Signal<Local, Bits<32>>,
+    smear_q: DFF<Bits<32>>,
+    half_q: DFF<Bits<32>>,
+    half_m1_q: DFF<Bits<32>>,
+    one: Constant<Bits<8>>,
     /// Stage 2: the rounded components, the shift.
     s_q2: DFF<Bits<8>>,
     neg_q2: [DFF<Bit>; 3],
     sum_q: [DFF<Bits<32>>; 3],
-    q: [Signal<Local, Bits<32>>; 3],
+    /// Stage 2: the bits at and above `2^s` and above `2^(s + mag_bits) - 1`:
+    /// a component is non-zero, or saturates, when it has one of them.
+    nz_mask_q: DFF<Bits<32>>,
+    sat_mask_q: DFF<Bits<32>>,
+    /// Stage 3: the rounded components shifted, their low bits.
+    q: [Signal<Local, Bits<MAG_BITS>>; 3],
     /// Stage 3: the quantized components.
     out_neg: [DFF<Bit>; 3],
     out_mag: [DFF<Bits<MAG_BITS>>; 3],
@@ -78,10 +90,16 @@ impl NormalQuantizer {
             s_q: Default::default(),
             neg_q: Default::default(),
             mag_q: Default::default(),
-            half: Default::default(),
+            smear: Default::default(),
+            smear_q: Default::default(),
+            half_q: Default::default(),
+            half_m1_q: Default::default(),
+            one: Constant::new(1u64.to_bits()),
             s_q2: Default::default(),
             neg_q2: Default::default(),
             sum_q: Default::default(),
+            nz_mask_q: Default::default(),
+            sat_mask_q: Default::default(),
             q: Default::default(),
             out_neg: Default::default(),
             out_mag: Default::default(),
@@ -95,7 +113,7 @@ impl NormalQuantizer {
 impl Logic for NormalQuantizer {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s_q, s_q2);
+        dff_setup!(self, clock, s_q, s_q2, nz_mask_q, sat_mask_q, smear_q, half_q, half_m1_q);
         // Stage 1: the leading one of the largest component, which is the
         // leading one of the three ORed, sets the shift.
         self.m.next = self.mag[0].val() | self.mag[1].val() | self.mag[2].val();
@@ -109,13 +127,28 @@ impl Logic for NormalQuantizer {
         if self.bl.val() > self.mag_bits.val() {
             self.s_q.d.next = self.bl.val() - self.mag_bits.val();
         }
+        // With the leading one at bit i, s = i + 1 - mag_bits when positive:
+        // 2^(s-1) is the leading one shifted right by mag_bits, and
+        // 2^(s-1) - 1 the bits below it, the smear shifted by mag_bits + 1.
+        self.smear.next = self.m.val() | (self.m.val() >> 1);
+        self.smear.next = self.smear.val() | (self.smear.val() >> 2);
+        self.smear.next = self.smear.val() | (self.smear.val() >> 4);
+        self.smear.next = self.smear.val() | (self.smear.val() >> 8);
+        self.smear.next = self.smear.val() | (self.smear.val() >> 16);
+        self.smear_q.d.next = self.smear.val();
+        self.half_q.d.next =
+            (self.smear.val() ^ (self.smear.val() >> self.one.val())) >> self.mag_bits.val();
+        self.half_m1_q.d.next = self.smear.val() >> (self.mag_bits.val() + self.one.val());
         // Stage 2: add the half (a negative component's half rounds
-        // towards zero in magnitude).
-        self.half.next = 0.into();
-        if self.s_q.q.val() > 0 {
-            self.half.next = (bit_cast::<32, 16>(1.into()) << self.s_q.q.val()) >> 1;
-        }
+        // towards zero in magnitude); the bits at and above 2^s (a
+        // non-zero result) and above 2^(s + mag_bits) - 1 (a saturated one).
         self.s_q2.d.next = self.s_q.q.val();
+        self.nz_mask_q.d.next = !(self.smear_q.q.val() >> self.mag_bits.val());
+        self.sat_mask_q.d.next = !(self.smear_q.q.val() | self.limit.val());
+        // (`bit_cast` takes no loop index in `hdl_gen`.)
+        self.q[0].next = bit_cast::<MAG_BITS, 32>(self.sum_q[0].q.val() >> self.s_q2.q.val());
+        self.q[1].next = bit_cast::<MAG_BITS, 32>(self.sum_q[1].q.val() >> self.s_q2.q.val());
+        self.q[2].next = bit_cast::<MAG_BITS, 32>(self.sum_q[2].q.val() >> self.s_q2.q.val());
         for i in 0..3 {
             self.neg_q[i].clock.next = self.clock.val();
             self.mag_q[i].clock.next = self.clock.val();
@@ -126,19 +159,19 @@ impl Logic for NormalQuantizer {
             self.neg_q[i].d.next = self.neg[i].val();
             self.mag_q[i].d.next = self.mag[i].val();
             self.neg_q2[i].d.next = self.neg_q[i].q.val();
-            self.sum_q[i].d.next = self.mag_q[i].q.val() + self.half.val();
-            if self.neg_q[i].q.val() & (self.s_q.q.val() > 0) {
-                self.sum_q[i].d.next = self.mag_q[i].q.val() + self.half.val() - 1;
+            self.sum_q[i].d.next = self.mag_q[i].q.val() + self.half_q.q.val();
+            if self.neg_q[i].q.val() {
+                self.sum_q[i].d.next = self.mag_q[i].q.val() + self.half_m1_q.q.val();
             }
-            // Stage 3: shift and saturate to the limit; the mask (no
+            // Stage 3: shift (`q`, below) and saturate to the limit; the mask (no
             // change to a saturated magnitude) tells synthesis which bits
             // the build has.
-            self.q[i].next = self.sum_q[i].q.val() >> self.s_q2.q.val();
-            if self.q[i].val() > self.limit.val() {
-                self.q[i].next = self.limit.val();
+            self.out_mag[i].d.next = self.q[i].val() & self.mask.val();
+            if (self.sum_q[i].q.val() & self.sat_mask_q.q.val()) != 0 {
+                self.out_mag[i].d.next = self.mask.val();
             }
-            self.out_mag[i].d.next = self.q[i].val().get_bits::<MAG_BITS>(0) & self.mask.val();
-            self.out_neg[i].d.next = self.neg_q2[i].q.val() & (self.q[i].val() != 0);
+            self.out_neg[i].d.next =
+                self.neg_q2[i].q.val() & ((self.sum_q[i].q.val() & self.nz_mask_q.q.val()) != 0);
             self.q_neg[i].next = self.out_neg[i].q.val();
             self.q_mag[i].next = self.out_mag[i].q.val();
         }

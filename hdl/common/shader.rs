@@ -29,9 +29,9 @@
 //! - E5: the gradient-opacity read; the opacity at E6;
 //! - E4-E11: the lighting's `[diffuse, specular]`
 //!   ([`lighting::LATENCY`], its tables' words registered);
-//! - E12: the product `c · d` ([`PipedMulUnorm`]); E13: `sat(mul(c, d) +
-//!   s)`;
-//! - E14: the product with the opacity; E15: the sample.
+//! - E12-E13: the product `c · d` ([`SplitMulUnorm`]: the product, then
+//!   its rounding half); E14: `sat(mul(c, d) + s)`;
+//! - E15-E16: the product with the opacity; E17: the sample.
 //!
 //! The intensity (MIP, MinIP), the classified colour and the opacity wait
 //! in registers beside the units.
@@ -40,8 +40,8 @@ use super::gradient_bin::GradientBin;
 use super::lighting;
 use super::lighting::Lighting;
 use super::normal_quantizer::{self, NormalQuantizer};
-use super::piped_mul::PipedMulUnorm;
 use super::regs::ADDRESS_BITS;
+use super::split_mul::SplitMulUnorm;
 use super::table::Table;
 use golden_model::fixed::max_of;
 use golden_model::host::{ShaderTables, Table as HostTable};
@@ -53,7 +53,7 @@ use scene::Mode;
 pub const LUT_INDEX_BITS: usize = 12;
 /// Register stages from the input to the sample: the input, the normal,
 /// the lighting, the two products and the sample.
-pub const LATENCY: usize = 1 + normal_quantizer::LATENCY + lighting::LATENCY + 4;
+pub const LATENCY: usize = 1 + normal_quantizer::LATENCY + lighting::LATENCY + 6;
 // The register arrays below are written for these latencies (`hdl_gen`
 // takes only literal loop bounds).
 const _: () = assert!(normal_quantizer::LATENCY == 3 && lighting::LATENCY == 7);
@@ -111,24 +111,25 @@ pub struct Shader {
     /// The gating flag, E1 to the opacity (E5).
     gate_q: [DFF<Bit>; 5],
     alpha: Signal<Local, Bits<16>>,
-    /// The opacity, E6 to E14.
-    alpha_q: [DFF<Bits<16>>; 9],
-    /// The intensity (E1 to E14) and the validity (E1 to E15).
-    value_q: [DFF<Bits<16>>; 14],
-    valid_q: [DFF<Bit>; 15],
+    /// The opacity, E6 to E16.
+    alpha_q: [DFF<Bits<16>>; 11],
+    /// The intensity (E1 to E16) and the validity (E1 to E17).
+    value_q: [DFF<Bits<16>>; 16],
+    valid_q: [DFF<Bit>; 17],
     diffuse: Signal<Local, Bits<16>>,
     specular: Signal<Local, Bits<16>>,
     specular_q: DFF<Bits<16>>,
-    lit_r: PipedMulUnorm,
-    lit_g: PipedMulUnorm,
-    lit_b: PipedMulUnorm,
+    specular_qq: DFF<Bits<16>>,
+    lit_r: SplitMulUnorm,
+    lit_g: SplitMulUnorm,
+    lit_b: SplitMulUnorm,
     sum_r: Signal<Local, Bits<32>>,
     sum_g: Signal<Local, Bits<32>>,
     sum_b: Signal<Local, Bits<32>>,
     shaded_q: [DFF<Bits<16>>; 3],
-    mul_r: PipedMulUnorm,
-    mul_g: PipedMulUnorm,
-    mul_b: PipedMulUnorm,
+    mul_r: SplitMulUnorm,
+    mul_g: SplitMulUnorm,
+    mul_b: SplitMulUnorm,
     r_q: DFF<Bits<16>>,
     g_q: DFF<Bits<16>>,
     b_q: DFF<Bits<16>>,
@@ -269,16 +270,17 @@ impl Shader {
             diffuse: Default::default(),
             specular: Default::default(),
             specular_q: Default::default(),
-            lit_r: PipedMulUnorm::enabled(c.rgba_bits, colour),
-            lit_g: PipedMulUnorm::enabled(c.rgba_bits, colour),
-            lit_b: PipedMulUnorm::enabled(c.rgba_bits, colour),
+            specular_qq: Default::default(),
+            lit_r: SplitMulUnorm::enabled(c.rgba_bits, colour),
+            lit_g: SplitMulUnorm::enabled(c.rgba_bits, colour),
+            lit_b: SplitMulUnorm::enabled(c.rgba_bits, colour),
             sum_r: Default::default(),
             sum_g: Default::default(),
             sum_b: Default::default(),
             shaded_q: Default::default(),
-            mul_r: PipedMulUnorm::enabled(c.rgba_bits, colour),
-            mul_g: PipedMulUnorm::enabled(c.rgba_bits, colour),
-            mul_b: PipedMulUnorm::enabled(c.rgba_bits, colour),
+            mul_r: SplitMulUnorm::enabled(c.rgba_bits, colour),
+            mul_g: SplitMulUnorm::enabled(c.rgba_bits, colour),
+            mul_b: SplitMulUnorm::enabled(c.rgba_bits, colour),
             r_q: Default::default(),
             g_q: Default::default(),
             b_q: Default::default(),
@@ -322,7 +324,7 @@ impl Shader {
 impl Logic for Shader {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, specular_q, r_q, g_q, b_q, a_q);
+        dff_setup!(self, clock, specular_q, specular_qq, r_q, g_q, b_q, a_q);
         // The host port reaches every table and register.
         self.lut.clock.next = self.clock.val();
         self.lut.host_write.next = self.host_write.val();
@@ -389,6 +391,8 @@ impl Logic for Shader {
         }
         for i in 0..9 {
             self.lut_q[i].clock.next = self.clock.val();
+        }
+        for i in 0..11 {
             self.alpha_q[i].clock.next = self.clock.val();
         }
         self.lut_q[0].d.next = self.lut.data.val();
@@ -402,18 +406,18 @@ impl Logic for Shader {
         for i in 1..5 {
             self.gate_q[i].d.next = self.gate_q[i - 1].q.val();
         }
-        for i in 0..14 {
+        for i in 0..16 {
             self.value_q[i].clock.next = self.clock.val();
         }
-        for i in 0..15 {
+        for i in 0..17 {
             self.valid_q[i].clock.next = self.clock.val();
         }
         self.value_q[0].d.next = self.value.val();
         self.valid_q[0].d.next = !self.invalid.val() | self.xray.val();
-        for i in 1..14 {
+        for i in 1..16 {
             self.value_q[i].d.next = self.value_q[i - 1].q.val();
         }
-        for i in 1..15 {
+        for i in 1..17 {
             self.valid_q[i].d.next = self.valid_q[i - 1].q.val();
         }
         // E5: the gradient-opacity read.
@@ -428,10 +432,10 @@ impl Logic for Shader {
             self.alpha.next = 0.into();
         }
         self.alpha_q[0].d.next = self.alpha.val();
-        for i in 1..9 {
+        for i in 1..11 {
             self.alpha_q[i].d.next = self.alpha_q[i - 1].q.val();
         }
-        // E12: mul(c, diffuse); E13: shaded = sat(mul(c, diffuse) + specular).
+        // E12-E13: mul(c, diffuse); E14: shaded = sat(mul(c, diffuse) + specular).
         self.diffuse.next = self.m_max.val();
         self.specular.next = 0.into();
         if self.shaded.val() {
@@ -439,6 +443,7 @@ impl Logic for Shader {
             self.specular.next = self.lighting.specular.val();
         }
         self.specular_q.d.next = self.specular.val();
+        self.specular_qq.d.next = self.specular_q.q.val();
         self.lit_r.a.next = bit_cast::<16, 64>(self.lut_q[8].q.val());
         self.lit_g.a.next = bit_cast::<16, 64>(self.lut_q[8].q.val() >> 16);
         self.lit_b.a.next = bit_cast::<16, 64>(self.lut_q[8].q.val() >> 32);
@@ -446,11 +451,11 @@ impl Logic for Shader {
         self.lit_g.b.next = self.diffuse.val();
         self.lit_b.b.next = self.diffuse.val();
         self.sum_r.next =
-            bit_cast::<32, 16>(self.lit_r.y.val()) + bit_cast::<32, 16>(self.specular_q.q.val());
+            bit_cast::<32, 16>(self.lit_r.y.val()) + bit_cast::<32, 16>(self.specular_qq.q.val());
         self.sum_g.next =
-            bit_cast::<32, 16>(self.lit_g.y.val()) + bit_cast::<32, 16>(self.specular_q.q.val());
+            bit_cast::<32, 16>(self.lit_g.y.val()) + bit_cast::<32, 16>(self.specular_qq.q.val());
         self.sum_b.next =
-            bit_cast::<32, 16>(self.lit_b.y.val()) + bit_cast::<32, 16>(self.specular_q.q.val());
+            bit_cast::<32, 16>(self.lit_b.y.val()) + bit_cast::<32, 16>(self.specular_qq.q.val());
         for i in 0..3 {
             self.shaded_q[i].clock.next = self.clock.val();
         }
@@ -466,20 +471,20 @@ impl Logic for Shader {
         if self.sum_b.val() > bit_cast::<32, 16>(self.m_max.val()) {
             self.shaded_q[2].d.next = self.m_max.val();
         }
-        // E14: mul(shaded, alpha); E15: the sample, or the scalar modes'.
+        // E15-E16: mul(shaded, alpha); E17: the sample, or the scalar modes'.
         self.mul_r.a.next = self.shaded_q[0].q.val();
         self.mul_g.a.next = self.shaded_q[1].q.val();
         self.mul_b.a.next = self.shaded_q[2].q.val();
-        self.mul_r.b.next = self.alpha_q[7].q.val();
-        self.mul_g.b.next = self.alpha_q[7].q.val();
-        self.mul_b.b.next = self.alpha_q[7].q.val();
+        self.mul_r.b.next = self.alpha_q[8].q.val();
+        self.mul_g.b.next = self.alpha_q[8].q.val();
+        self.mul_b.b.next = self.alpha_q[8].q.val();
         if self.scalar.val() {
-            self.r_q.d.next = self.value_q[13].q.val();
+            self.r_q.d.next = self.value_q[15].q.val();
             self.g_q.d.next = 0.into();
             self.b_q.d.next = 0.into();
             self.a_q.d.next = 0.into();
         } else if self.xray.val() {
-            self.r_q.d.next = self.alpha_q[8].q.val();
+            self.r_q.d.next = self.alpha_q[10].q.val();
             self.g_q.d.next = 0.into();
             self.b_q.d.next = 0.into();
             self.a_q.d.next = 0.into();
@@ -487,7 +492,7 @@ impl Logic for Shader {
             self.r_q.d.next = self.mul_r.y.val();
             self.g_q.d.next = self.mul_g.y.val();
             self.b_q.d.next = self.mul_b.y.val();
-            self.a_q.d.next = self.alpha_q[8].q.val();
+            self.a_q.d.next = self.alpha_q[10].q.val();
         }
         self.r.next = 0.into();
         self.g.next = 0.into();
@@ -499,7 +504,7 @@ impl Logic for Shader {
             self.g.next = self.g_q.q.val();
             self.b.next = self.b_q.q.val();
             self.a.next = self.a_q.q.val();
-            self.valid.next = self.valid_q[14].q.val();
+            self.valid.next = self.valid_q[16].q.val();
         }
     }
 }

@@ -3,8 +3,8 @@
 //! product alone into a register (the multiplier's clock holds no carry
 //! chain), then its rounding half (`t = a*b + 2^(bits-1)`) into a second;
 //! `y = (t + (t >> bits)) >> bits` leaves combinationally from that
-//! register two clocks after `a` and `b`. [`super::piped_mul`]'s multiplier
-//! with the product's clock cut in two, for the compositor's over operator.
+//! register two clocks after `a` and `b`. The over operator's and the
+//! shader's products.
 
 use rust_hdl::prelude::*;
 
@@ -22,10 +22,17 @@ pub struct SplitMulUnorm {
     shift: Constant<Bits<8>>,
     p: DFF<Bits<32>>,
     t: DFF<Bits<32>>,
+    enabled: Constant<Bit>,
 }
 
 impl SplitMulUnorm {
     pub fn new(bits: u32) -> SplitMulUnorm {
+        Self::enabled(bits, true)
+    }
+
+    /// Without `enabled` the product is zero, as in emitted Verilog that
+    /// leaves the multiplier out (`export::prune`).
+    pub fn enabled(bits: u32, enabled: bool) -> SplitMulUnorm {
         SplitMulUnorm {
             clock: Default::default(),
             a: Default::default(),
@@ -35,6 +42,7 @@ impl SplitMulUnorm {
             shift: Constant::new((bits as u64).to_bits()),
             p: Default::default(),
             t: Default::default(),
+            enabled: Constant::new(enabled),
         }
     }
 }
@@ -48,5 +56,8 @@ impl Logic for SplitMulUnorm {
         self.y.next = bit_cast::<16, 32>(
             (self.t.q.val() + (self.t.q.val() >> self.shift.val())) >> self.shift.val(),
         );
+        if !self.enabled.val() {
+            self.y.next = 0.into();
+        }
     }
 }

@@ -247,7 +247,7 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
 
 // `hdl_gen` needs literal loop bounds: the flags' registers beside the
 // shaders are written for a 15-clock shader.
-const _: () = assert!(SHADER_LATENCY == 15, "update the shaders' flag registers");
+const _: () = assert!(SHADER_LATENCY == 17, "update the shaders' flag registers");
 
 impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
     #[hdl_gen]
@@ -298,16 +298,16 @@ impl<const P: usize, const H: usize> Logic for Cube3<P, H> {
         if self.gradients.val() {
             self.leaf_flags.next = self.flags_line.data_out.val();
         }
-        for j in 0..14 {
+        for j in 0..16 {
             self.shade_flags_q[j].clock.next = self.clock.val();
         }
         self.shade_flags_q[0].d.next = self.leaf_flags.val();
-        for j in 1..14 {
+        for j in 1..16 {
             self.shade_flags_q[j].d.next = self.shade_flags_q[j - 1].q.val();
         }
         self.rpc_flags_q.d.next = self.leaf_flags.val();
         if self.shaded.val() {
-            self.rpc_flags_q.d.next = self.shade_flags_q[13].q.val();
+            self.rpc_flags_q.d.next = self.shade_flags_q[15].q.val();
         }
         self.abc.dx_neg.next = self.control.dx_neg.val();
         self.abc.dx_mag.next = self.control.dx_mag.val();

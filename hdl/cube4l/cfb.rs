@@ -134,6 +134,9 @@ pub struct Cfb<const P: usize, const A: usize> {
     nb_q: DFF<Bits<16>>,
     z0: Signal<Local, Bits<16>>,
     z1: Signal<Local, Bits<16>>,
+    /// The view's `n_y - 1` and `B - 1`.
+    ny_m1: Signal<Local, Bits<16>>,
+    b_m1: Signal<Local, Bits<16>>,
     /// The inner counts' spans, registered from the view registers for the
     /// wraps' reloads, and each counter's steps left before it wraps: the
     /// wrap tests a counter's own register against zero, not an up-counter
@@ -227,6 +230,8 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
             nb_q: Default::default(),
             z0: Default::default(),
             z1: Default::default(),
+            ny_m1: Default::default(),
+            b_m1: Default::default(),
             ny_last: Default::default(),
             b_last: Default::default(),
             nb_left: Default::default(),
@@ -279,8 +284,10 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
         // The slices streamed, the last beam, the last partial beam.
         self.z0.next = self.slices.val().get_bits::<16>(32);
         self.z1.next = self.slices.val().get_bits::<16>(48);
-        self.ny_last.d.next = self.dims.val().get_bits::<16>(16) - 1;
-        self.b_last.d.next = self.beats.val().get_bits::<16>(32) - 1;
+        self.ny_m1.next = self.dims.val().get_bits::<16>(16) - 1;
+        self.b_m1.next = self.beats.val().get_bits::<16>(32) - 1;
+        self.ny_last.d.next = self.ny_m1.val();
+        self.b_last.d.next = self.b_m1.val();
         for k in 0..P {
             self.lanes[k].clock.next = self.clock.val();
             self.lanes[k].dims.next = self.dims.val();
@@ -334,8 +341,8 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
             self.nb_c.d.next = 0.into();
             // The view is valid from this clock; its registered spans from
             // the next, in time for the first wrap.
-            self.nb_left.d.next = self.beats.val().get_bits::<16>(32) - 1;
-            self.nbeam_left.d.next = self.dims.val().get_bits::<16>(16) - 1;
+            self.nb_left.d.next = self.b_m1.val();
+            self.nbeam_left.d.next = self.ny_m1.val();
             self.ns_left.d.next = self.z1.val() - self.z0.val();
         }
         if self.running.q.val() {

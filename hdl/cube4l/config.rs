@@ -74,6 +74,14 @@ impl PipelineConfig {
         }
     }
 
+    /// A mask of the bits a coordinate takes in the largest volume: a
+    /// voxel's x or y in a slice (below `max_dim`, padding included) or a
+    /// base-plane pixel's (below `3 max_dim`: the slice and a border of
+    /// at most `max_dim` on either side), with room to spare.
+    pub fn coord_mask(&self) -> u32 {
+        (4 * self.max_dim).next_power_of_two() - 1
+    }
+
     /// The ABC gradient unit: shading or gradient opacity needs it (and
     /// delays everything a slice).
     pub fn gradient(&self) -> bool {

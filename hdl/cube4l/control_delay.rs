@@ -18,7 +18,7 @@ const RESULT: usize = GATHER + LATENCY + super::compositor::LATENCY;
 // `hdl_gen` needs literal loop bounds and indices: the update below is
 // written for a gather 8 clocks and a result 19 clocks after the input.
 const _: () = assert!(
-    GATHER == 8 && RESULT == 19,
+    GATHER == 10 && RESULT == 21,
     "update the literals in ControlDelay::update"
 );
 
@@ -42,6 +42,11 @@ pub struct ControlDelay {
     pub dy_mag: Signal<In, Bits<16>>,
     /// The `Dims` register (the slice's n_x and n_y).
     pub dims: Signal<In, Bits<64>>,
+    /// The bits `x`, `y`, `base_x` and `base_y` can have in the build's
+    /// largest volume, a constant: the registers above them are left out
+    /// (16 bits a coordinate in every build would carry 61 registers of 16
+    /// bits a lane, whatever the volume).
+    pub coord_mask: Signal<In, Bits<16>>,
     /// At the gather (T): the voxel's x (for the taps), SR, dx and dy.
     pub x_t: Signal<Out, Bits<16>>,
     pub sr_t: Signal<Out, Bit>,
@@ -69,7 +74,7 @@ pub struct ControlDelay {
     // Control to the gather.
     x_q: [DFF<Bits<16>>; GATHER],
     /// y goes only as far as the slice-edge test a clock before T.
-    y_q: [DFF<Bits<16>>; 7],
+    y_q: [DFF<Bits<16>>; 9],
     sr_q: [DFF<Bit>; GATHER],
     dxn_q: [DFF<Bit>; GATHER],
     dxm_q: [DFF<Bits<16>>; GATHER],
@@ -88,7 +93,7 @@ impl Logic for ControlDelay {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, nx_last, ny_last, x_out_q, y_out_q);
-        for i in 0..8 {
+        for i in 0..10 {
             self.x_q[i].clock.next = self.clock.val();
             self.sr_q[i].clock.next = self.clock.val();
             self.dxn_q[i].clock.next = self.clock.val();
@@ -96,7 +101,7 @@ impl Logic for ControlDelay {
             self.dyn_q[i].clock.next = self.clock.val();
             self.dym_q[i].clock.next = self.clock.val();
         }
-        for i in 0..19 {
+        for i in 0..21 {
             self.v_q[i].clock.next = self.clock.val();
             self.er_q[i].clock.next = self.clock.val();
             self.pad_q[i].clock.next = self.clock.val();
@@ -105,14 +110,14 @@ impl Logic for ControlDelay {
             self.face_q[i].clock.next = self.clock.val();
         }
         // The input -> the gather.
-        self.x_q[0].d.next = self.x.val();
-        self.y_q[0].d.next = self.y.val();
+        self.x_q[0].d.next = self.x.val() & self.coord_mask.val();
+        self.y_q[0].d.next = self.y.val() & self.coord_mask.val();
         self.sr_q[0].d.next = self.sr.val();
         self.dxn_q[0].d.next = self.dx_neg.val();
         self.dxm_q[0].d.next = self.dx_mag.val();
         self.dyn_q[0].d.next = self.dy_neg.val();
         self.dym_q[0].d.next = self.dy_mag.val();
-        for i in 1..8 {
+        for i in 1..10 {
             self.x_q[i].d.next = self.x_q[i - 1].q.val();
             self.sr_q[i].d.next = self.sr_q[i - 1].q.val();
             self.dxn_q[i].d.next = self.dxn_q[i - 1].q.val();
@@ -120,35 +125,35 @@ impl Logic for ControlDelay {
             self.dyn_q[i].d.next = self.dyn_q[i - 1].q.val();
             self.dym_q[i].d.next = self.dym_q[i - 1].q.val();
         }
-        for i in 0..7 {
+        for i in 0..9 {
             self.y_q[i].clock.next = self.clock.val();
         }
-        for i in 1..7 {
+        for i in 1..9 {
             self.y_q[i].d.next = self.y_q[i - 1].q.val();
         }
-        self.x_t.next = self.x_q[7].q.val();
-        self.sr_t.next = self.sr_q[7].q.val();
-        self.dx_neg_t.next = self.dxn_q[7].q.val();
-        self.dx_mag_t.next = self.dxm_q[7].q.val();
-        self.dy_neg_t.next = self.dyn_q[7].q.val();
-        self.dy_mag_t.next = self.dym_q[7].q.val();
+        self.x_t.next = self.x_q[9].q.val();
+        self.sr_t.next = self.sr_q[9].q.val();
+        self.dx_neg_t.next = self.dxn_q[9].q.val();
+        self.dx_mag_t.next = self.dxm_q[9].q.val();
+        self.dy_neg_t.next = self.dyn_q[9].q.val();
+        self.dy_mag_t.next = self.dym_q[9].q.val();
         // The slice-edge tests of the 2x2 selection, from the control at T-1.
         self.nx_last.d.next = self.dims.val().get_bits::<16>(0) - 1;
         self.ny_last.d.next = self.dims.val().get_bits::<16>(16) - 1;
         self.x_out_q.d.next = false;
-        if self.dxm_q[6].q.val() != 0 {
-            if self.dxn_q[6].q.val() {
-                self.x_out_q.d.next = self.x_q[6].q.val() == self.nx_last.q.val();
+        if self.dxm_q[8].q.val() != 0 {
+            if self.dxn_q[8].q.val() {
+                self.x_out_q.d.next = self.x_q[8].q.val() == self.nx_last.q.val();
             } else {
-                self.x_out_q.d.next = self.x_q[6].q.val() == 0;
+                self.x_out_q.d.next = self.x_q[8].q.val() == 0;
             }
         }
         self.y_out_q.d.next = false;
-        if self.dym_q[6].q.val() != 0 {
-            if self.dyn_q[6].q.val() {
-                self.y_out_q.d.next = self.y_q[6].q.val() == self.ny_last.q.val();
+        if self.dym_q[8].q.val() != 0 {
+            if self.dyn_q[8].q.val() {
+                self.y_out_q.d.next = self.y_q[8].q.val() == self.ny_last.q.val();
             } else {
-                self.y_out_q.d.next = self.y_q[6].q.val() == 0;
+                self.y_out_q.d.next = self.y_q[8].q.val() == 0;
             }
         }
         self.x_out_t.next = self.x_out_q.q.val();
@@ -157,10 +162,10 @@ impl Logic for ControlDelay {
         self.v_q[0].d.next = self.valid.val();
         self.er_q[0].d.next = self.er.val();
         self.pad_q[0].d.next = self.pad.val();
-        self.bx_q[0].d.next = self.base_x.val();
-        self.by_q[0].d.next = self.base_y.val();
+        self.bx_q[0].d.next = self.base_x.val() & self.coord_mask.val();
+        self.by_q[0].d.next = self.base_y.val() & self.coord_mask.val();
         self.face_q[0].d.next = self.face.val();
-        for i in 1..19 {
+        for i in 1..21 {
             self.v_q[i].d.next = self.v_q[i - 1].q.val();
             self.er_q[i].d.next = self.er_q[i - 1].q.val();
             self.pad_q[i].d.next = self.pad_q[i - 1].q.val();
@@ -168,11 +173,11 @@ impl Logic for ControlDelay {
             self.by_q[i].d.next = self.by_q[i - 1].q.val();
             self.face_q[i].d.next = self.face_q[i - 1].q.val();
         }
-        self.res_beat.next = self.v_q[18].q.val();
-        self.res_valid.next = self.v_q[18].q.val() & !self.pad_q[18].q.val();
-        self.px_valid.next = self.v_q[18].q.val() & self.er_q[18].q.val() & !self.pad_q[18].q.val();
-        self.px_x.next = self.bx_q[18].q.val();
-        self.px_y.next = self.by_q[18].q.val();
-        self.px_face.next = self.face_q[18].q.val();
+        self.res_beat.next = self.v_q[20].q.val();
+        self.res_valid.next = self.v_q[20].q.val() & !self.pad_q[20].q.val();
+        self.px_valid.next = self.v_q[20].q.val() & self.er_q[20].q.val() & !self.pad_q[20].q.val();
+        self.px_x.next = self.bx_q[20].q.val();
+        self.px_y.next = self.by_q[20].q.val();
+        self.px_face.next = self.face_q[20].q.val();
     }
 }

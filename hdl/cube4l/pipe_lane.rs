@@ -104,6 +104,9 @@ pub struct PipeLane<const H: usize> {
     feed: LaneFeed<H>,
     shader: Shader,
     ctl: ControlDelay,
+    /// The bits a slice or base-plane coordinate of the build's largest
+    /// volume can have ([`PipelineConfig::coord_mask`]).
+    coord_mask: Constant<Bits<16>>,
     taps: TapNetwork<H>,
     cells: Select2x2,
     bilinear: Bilinear,
@@ -192,6 +195,7 @@ impl<const H: usize> PipeLane<H> {
             feed: LaneFeed::new(c),
             shader,
             ctl: Default::default(),
+            coord_mask: Constant::new((c.coord_mask() as u64).to_bits()),
             taps: TapNetwork::new(c),
             cells: Select2x2::new(c),
             bilinear: Bilinear::new(c.frac_bits, c.mode == ModeClass::Xray),
@@ -254,6 +258,7 @@ impl<const H: usize> Logic for PipeLane<H> {
         self.ctl.valid.next = self.feed.o_valid.val();
         self.ctl.er.next = self.feed.o_er.val();
         self.ctl.pad.next = self.feed.o_pad.val();
+        self.ctl.coord_mask.next = self.coord_mask.val();
         self.ctl.base_x.next = self.feed.o_base_x.val();
         self.ctl.base_y.next = self.feed.o_base_y.val();
         self.ctl.face.next = self.feed.o_face.val();

@@ -129,16 +129,16 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
         ),
         fault(
             "wrong rounding constant",
-            "normal quantizer rounds down",
+            "normal quantizer rounds a positive component down",
             "top$lanes$0$shader$normal",
-            "half = (32'('h1) << s_q$q) >> 'h1;",
-            "half = 'h0;",
+            "half_q$d = (smear ^ (smear >> one)) >> mag_bits;",
+            "half_q$d = 'h0;",
         ),
         fault(
             "dropped saturation",
             "normal quantizer: x component not saturated",
             "top$lanes$0$shader$normal",
-            "if (q$0 > limit) begin",
+            "if ((sum_q$0$q & sat_mask_q$q) != 'h0) begin",
             "if (1'b0) begin",
         ),
         fault(

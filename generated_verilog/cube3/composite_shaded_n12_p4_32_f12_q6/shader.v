@@ -175,6 +175,12 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] alpha_q$8$d;
     wire  [15:0] alpha_q$8$q;
     reg  alpha_q$8$clock;
+    reg  [15:0] alpha_q$9$d;
+    wire  [15:0] alpha_q$9$q;
+    reg  alpha_q$9$clock;
+    reg  [15:0] alpha_q$10$d;
+    wire  [15:0] alpha_q$10$q;
+    reg  alpha_q$10$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -217,6 +223,12 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] value_q$13$d;
     wire  [15:0] value_q$13$q;
     reg  value_q$13$clock;
+    reg  [15:0] value_q$14$d;
+    wire  [15:0] value_q$14$q;
+    reg  value_q$14$clock;
+    reg  [15:0] value_q$15$d;
+    wire  [15:0] value_q$15$q;
+    reg  value_q$15$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -262,9 +274,18 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  valid_q$14$d;
     wire  valid_q$14$q;
     reg  valid_q$14$clock;
+    reg  valid_q$15$d;
+    wire  valid_q$15$q;
+    reg  valid_q$15$clock;
+    reg  valid_q$16$d;
+    wire  valid_q$16$q;
+    reg  valid_q$16$clock;
     reg  [15:0] specular_q$d;
     wire  [15:0] specular_q$q;
     reg  specular_q$clock;
+    reg  [15:0] specular_qq$d;
+    wire  [15:0] specular_qq$q;
+    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
@@ -527,6 +548,16 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         .q(alpha_q$8$q),
         .clock(alpha_q$8$clock)
     );
+    top$pipeline$shade$0$alpha_q$9 alpha_q$9(
+        .d(alpha_q$9$d),
+        .q(alpha_q$9$q),
+        .clock(alpha_q$9$clock)
+    );
+    top$pipeline$shade$0$alpha_q$10 alpha_q$10(
+        .d(alpha_q$10$d),
+        .q(alpha_q$10$q),
+        .clock(alpha_q$10$clock)
+    );
     top$pipeline$shade$0$value_q$0 value_q$0(
         .d(value_q$0$d),
         .q(value_q$0$q),
@@ -596,6 +627,16 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         .d(value_q$13$d),
         .q(value_q$13$q),
         .clock(value_q$13$clock)
+    );
+    top$pipeline$shade$0$value_q$14 value_q$14(
+        .d(value_q$14$d),
+        .q(value_q$14$q),
+        .clock(value_q$14$clock)
+    );
+    top$pipeline$shade$0$value_q$15 value_q$15(
+        .d(value_q$15$d),
+        .q(value_q$15$q),
+        .clock(value_q$15$clock)
     );
     top$pipeline$shade$0$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -672,10 +713,25 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         .q(valid_q$14$q),
         .clock(valid_q$14$clock)
     );
+    top$pipeline$shade$0$valid_q$15 valid_q$15(
+        .d(valid_q$15$d),
+        .q(valid_q$15$q),
+        .clock(valid_q$15$clock)
+    );
+    top$pipeline$shade$0$valid_q$16 valid_q$16(
+        .d(valid_q$16$d),
+        .q(valid_q$16$q),
+        .clock(valid_q$16$clock)
+    );
     top$pipeline$shade$0$specular_q specular_q(
         .d(specular_q$d),
         .q(specular_q$q),
         .clock(specular_q$clock)
+    );
+    top$pipeline$shade$0$specular_qq specular_qq(
+        .d(specular_qq$d),
+        .q(specular_qq$q),
+        .clock(specular_qq$clock)
     );
     top$pipeline$shade$0$lit_r lit_r(
         .clock(lit_r$clock),
@@ -757,11 +813,13 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  valid_pass;
     always @(*) begin
         specular_q$clock = clock;
+        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
         specular_q$d = specular_q$q;
+        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -837,23 +895,25 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         row_q$2$d = row_q$1$q;
         row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        alpha_q$3$clock = clock;
         lut_q$4$clock = clock;
-        alpha_q$4$clock = clock;
         lut_q$5$clock = clock;
-        alpha_q$5$clock = clock;
         lut_q$6$clock = clock;
-        alpha_q$6$clock = clock;
         lut_q$7$clock = clock;
-        alpha_q$7$clock = clock;
         lut_q$8$clock = clock;
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$2$clock = clock;
+        alpha_q$3$clock = clock;
+        alpha_q$4$clock = clock;
+        alpha_q$5$clock = clock;
+        alpha_q$6$clock = clock;
+        alpha_q$7$clock = clock;
         alpha_q$8$clock = clock;
+        alpha_q$9$clock = clock;
+        alpha_q$10$clock = clock;
         lut_q$0$d = lut$data;
         lut_q$1$d = lut_q$0$q;
         lut_q$2$d = lut_q$1$q;
@@ -887,6 +947,8 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         value_q$11$clock = clock;
         value_q$12$clock = clock;
         value_q$13$clock = clock;
+        value_q$14$clock = clock;
+        value_q$15$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -902,6 +964,8 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         valid_q$12$clock = clock;
         valid_q$13$clock = clock;
         valid_q$14$clock = clock;
+        valid_q$15$clock = clock;
+        valid_q$16$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -917,6 +981,8 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         value_q$11$d = value_q$10$q;
         value_q$12$d = value_q$11$q;
         value_q$13$d = value_q$12$q;
+        value_q$14$d = value_q$13$q;
+        value_q$15$d = value_q$14$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
@@ -931,6 +997,8 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         valid_q$12$d = valid_q$11$q;
         valid_q$13$d = valid_q$12$q;
         valid_q$14$d = valid_q$13$q;
+        valid_q$15$d = valid_q$14$q;
+        valid_q$16$d = valid_q$15$q;
         alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
@@ -948,6 +1016,8 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         alpha_q$6$d = alpha_q$5$q;
         alpha_q$7$d = alpha_q$6$q;
         alpha_q$8$d = alpha_q$7$q;
+        alpha_q$9$d = alpha_q$8$q;
+        alpha_q$10$d = alpha_q$9$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
@@ -955,15 +1025,16 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
             specular = lighting$specular;
         end
         specular_q$d = specular;
+        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
+        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -982,17 +1053,17 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$7$q;
-        mul_g$b = alpha_q$7$q;
-        mul_b$b = alpha_q$7$q;
+        mul_r$b = alpha_q$8$q;
+        mul_g$b = alpha_q$8$q;
+        mul_b$b = alpha_q$8$q;
         if (scalar) begin
-            r_q$d = value_q$13$q;
+            r_q$d = value_q$15$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$8$q;
+            r_q$d = alpha_q$10$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -1001,7 +1072,7 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$8$q;
+            a_q$d = alpha_q$10$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -1013,7 +1084,7 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$14$q;
+            valid_pass = valid_q$16$q;
         end
         r = r_pass;
         g = g_pass;
@@ -1074,6 +1145,23 @@ module top$pipeline$shade$0$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$alpha_q$1
+module top$pipeline$shade$0$alpha_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$alpha_q$10
 module top$pipeline$shade$0$alpha_q$2(d,q,clock);
     
     // Module arguments
@@ -1193,6 +1281,23 @@ module top$pipeline$shade$0$alpha_q$8(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$alpha_q$8
+module top$pipeline$shade$0$alpha_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$alpha_q$9
 module top$pipeline$shade$0$b_q(d,q,clock);
     
     // Module arguments
@@ -7034,11 +7139,19 @@ module top$pipeline$shade$0$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$0$lit_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$0$lit_b$t t(
         .d(t$d),
         .q(t$q),
@@ -7048,9 +7161,12 @@ module top$pipeline$shade$0$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -7059,6 +7175,23 @@ module top$pipeline$shade$0$lit_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$lit_b
+module top$pipeline$shade$0$lit_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_b$p
 module top$pipeline$shade$0$lit_b$t(d,q,clock);
     
     // Module arguments
@@ -7090,11 +7223,19 @@ module top$pipeline$shade$0$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$0$lit_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$0$lit_g$t t(
         .d(t$d),
         .q(t$q),
@@ -7104,9 +7245,12 @@ module top$pipeline$shade$0$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -7115,6 +7259,23 @@ module top$pipeline$shade$0$lit_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$lit_g
+module top$pipeline$shade$0$lit_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_g$p
 module top$pipeline$shade$0$lit_g$t(d,q,clock);
     
     // Module arguments
@@ -7146,11 +7307,19 @@ module top$pipeline$shade$0$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$0$lit_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$0$lit_r$t t(
         .d(t$d),
         .q(t$q),
@@ -7160,9 +7329,12 @@ module top$pipeline$shade$0$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -7171,6 +7343,23 @@ module top$pipeline$shade$0$lit_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$lit_r
+module top$pipeline$shade$0$lit_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_r$p
 module top$pipeline$shade$0$lit_r$t(d,q,clock);
     
     // Module arguments
@@ -7476,11 +7665,19 @@ module top$pipeline$shade$0$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$0$mul_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$0$mul_b$t t(
         .d(t$d),
         .q(t$q),
@@ -7490,9 +7687,12 @@ module top$pipeline$shade$0$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -7501,6 +7701,23 @@ module top$pipeline$shade$0$mul_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$mul_b
+module top$pipeline$shade$0$mul_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$mul_b$p
 module top$pipeline$shade$0$mul_b$t(d,q,clock);
     
     // Module arguments
@@ -7532,11 +7749,19 @@ module top$pipeline$shade$0$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$0$mul_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$0$mul_g$t t(
         .d(t$d),
         .q(t$q),
@@ -7546,9 +7771,12 @@ module top$pipeline$shade$0$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -7557,6 +7785,23 @@ module top$pipeline$shade$0$mul_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$mul_g
+module top$pipeline$shade$0$mul_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$mul_g$p
 module top$pipeline$shade$0$mul_g$t(d,q,clock);
     
     // Module arguments
@@ -7588,11 +7833,19 @@ module top$pipeline$shade$0$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$0$mul_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$0$mul_r$t t(
         .d(t$d),
         .q(t$q),
@@ -7602,9 +7855,12 @@ module top$pipeline$shade$0$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -7613,6 +7869,23 @@ module top$pipeline$shade$0$mul_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$mul_r
+module top$pipeline$shade$0$mul_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$mul_r$p
 module top$pipeline$shade$0$mul_r$t(d,q,clock);
     
     // Module arguments
@@ -7731,6 +8004,7 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     localparam  bit_len$29 = 8'h1e;
     localparam  bit_len$30 = 8'h1f;
     localparam  bit_len$31 = 8'h20;
+    localparam  one = 8'h1;
     localparam  mag_bits = 8'h5;
     localparam  limit = 'h1f;
     localparam  mask = 7'b11111;
@@ -7757,6 +8031,15 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     reg  [31:0] mag_q$2$d;
     wire  [31:0] mag_q$2$q;
     reg  mag_q$2$clock;
+    reg  [31:0] smear_q$d;
+    wire  [31:0] smear_q$q;
+    reg  smear_q$clock;
+    reg  [31:0] half_q$d;
+    wire  [31:0] half_q$q;
+    reg  half_q$clock;
+    reg  [31:0] half_m1_q$d;
+    wire  [31:0] half_m1_q$q;
+    reg  half_m1_q$clock;
     reg  [7:0] s_q2$d;
     wire  [7:0] s_q2$q;
     reg  s_q2$clock;
@@ -7778,6 +8061,12 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     reg  [31:0] sum_q$2$d;
     wire  [31:0] sum_q$2$q;
     reg  sum_q$2$clock;
+    reg  [31:0] nz_mask_q$d;
+    wire  [31:0] nz_mask_q$q;
+    reg  nz_mask_q$clock;
+    reg  [31:0] sat_mask_q$d;
+    wire  [31:0] sat_mask_q$q;
+    reg  sat_mask_q$clock;
     reg  out_neg$0$d;
     wire  out_neg$0$q;
     reg  out_neg$0$clock;
@@ -7800,10 +8089,10 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     // Local signals
     reg  [31:0] m;
     reg  [7:0] bl;
-    reg  [31:0] half;
-    reg  [31:0] q$0;
-    reg  [31:0] q$1;
-    reg  [31:0] q$2;
+    reg  [31:0] smear;
+    reg  [6:0] q$0;
+    reg  [6:0] q$1;
+    reg  [6:0] q$2;
     
     // Sub module instances
     top$pipeline$shade$0$normal$s_q s_q(
@@ -7841,6 +8130,21 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         .q(mag_q$2$q),
         .clock(mag_q$2$clock)
     );
+    top$pipeline$shade$0$normal$smear_q smear_q(
+        .d(smear_q$d),
+        .q(smear_q$q),
+        .clock(smear_q$clock)
+    );
+    top$pipeline$shade$0$normal$half_q half_q(
+        .d(half_q$d),
+        .q(half_q$q),
+        .clock(half_q$clock)
+    );
+    top$pipeline$shade$0$normal$half_m1_q half_m1_q(
+        .d(half_m1_q$d),
+        .q(half_m1_q$q),
+        .clock(half_m1_q$clock)
+    );
     top$pipeline$shade$0$normal$s_q2 s_q2(
         .d(s_q2$d),
         .q(s_q2$q),
@@ -7875,6 +8179,16 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         .d(sum_q$2$d),
         .q(sum_q$2$q),
         .clock(sum_q$2$clock)
+    );
+    top$pipeline$shade$0$normal$nz_mask_q nz_mask_q(
+        .d(nz_mask_q$d),
+        .q(nz_mask_q$q),
+        .clock(nz_mask_q$clock)
+    );
+    top$pipeline$shade$0$normal$sat_mask_q sat_mask_q(
+        .d(sat_mask_q$d),
+        .q(sat_mask_q$q),
+        .clock(sat_mask_q$clock)
     );
     top$pipeline$shade$0$normal$out_neg$0 out_neg$0(
         .d(out_neg$0$d),
@@ -7911,8 +8225,18 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     always @(*) begin
         s_q$clock = clock;
         s_q2$clock = clock;
+        nz_mask_q$clock = clock;
+        sat_mask_q$clock = clock;
+        smear_q$clock = clock;
+        half_q$clock = clock;
+        half_m1_q$clock = clock;
         s_q$d = s_q$q;
         s_q2$d = s_q2$q;
+        nz_mask_q$d = nz_mask_q$q;
+        sat_mask_q$d = sat_mask_q$q;
+        smear_q$d = smear_q$q;
+        half_q$d = half_q$q;
+        half_m1_q$d = half_m1_q$q;
         m = mag$0 | mag$1 | mag$2;
         bl = 'h0;
         if (m[0]) begin
@@ -8015,11 +8339,20 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         if (bl > mag_bits) begin
             s_q$d = bl - mag_bits;
         end
-        half = 'h0;
-        if (s_q$q > 'h0) begin
-            half = (32'('h1) << s_q$q) >> 'h1;
-        end
+        smear = m | (m >> 'h1);
+        smear = smear | (smear >> 'h2);
+        smear = smear | (smear >> 'h4);
+        smear = smear | (smear >> 'h8);
+        smear = smear | (smear >> 'h10);
+        smear_q$d = smear;
+        half_q$d = (smear ^ (smear >> one)) >> mag_bits;
+        half_m1_q$d = smear >> (mag_bits + one);
         s_q2$d = s_q$q;
+        nz_mask_q$d = ~(smear_q$q >> mag_bits);
+        sat_mask_q$d = ~(smear_q$q | limit);
+        q$0 = 7'(sum_q$0$q >> s_q2$q);
+        q$1 = 7'(sum_q$1$q >> s_q2$q);
+        q$2 = 7'(sum_q$2$q >> s_q2$q);
         neg_q$0$clock = clock;
         mag_q$0$clock = clock;
         neg_q2$0$clock = clock;
@@ -8029,16 +8362,15 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$0$d = neg$0;
         mag_q$0$d = mag$0;
         neg_q2$0$d = neg_q$0$q;
-        sum_q$0$d = mag_q$0$q + half;
-        if (neg_q$0$q & (s_q$q > 'h0)) begin
-            sum_q$0$d = mag_q$0$q + half - 'h1;
+        sum_q$0$d = mag_q$0$q + half_q$q;
+        if (neg_q$0$q) begin
+            sum_q$0$d = mag_q$0$q + half_m1_q$q;
         end
-        q$0 = sum_q$0$q >> s_q2$q;
-        if (q$0 > limit) begin
-            q$0 = limit;
+        out_mag$0$d = q$0 & mask;
+        if ((sum_q$0$q & sat_mask_q$q) != 'h0) begin
+            out_mag$0$d = mask;
         end
-        out_mag$0$d = q$0[('h0)+:(7)] & mask;
-        out_neg$0$d = neg_q2$0$q & (q$0 != 'h0);
+        out_neg$0$d = neg_q2$0$q & ((sum_q$0$q & nz_mask_q$q) != 'h0);
         q_neg$0 = out_neg$0$q;
         q_mag$0 = out_mag$0$q;
         neg_q$1$clock = clock;
@@ -8050,16 +8382,15 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$1$d = neg$1;
         mag_q$1$d = mag$1;
         neg_q2$1$d = neg_q$1$q;
-        sum_q$1$d = mag_q$1$q + half;
-        if (neg_q$1$q & (s_q$q > 'h0)) begin
-            sum_q$1$d = mag_q$1$q + half - 'h1;
+        sum_q$1$d = mag_q$1$q + half_q$q;
+        if (neg_q$1$q) begin
+            sum_q$1$d = mag_q$1$q + half_m1_q$q;
         end
-        q$1 = sum_q$1$q >> s_q2$q;
-        if (q$1 > limit) begin
-            q$1 = limit;
+        out_mag$1$d = q$1 & mask;
+        if ((sum_q$1$q & sat_mask_q$q) != 'h0) begin
+            out_mag$1$d = mask;
         end
-        out_mag$1$d = q$1[('h0)+:(7)] & mask;
-        out_neg$1$d = neg_q2$1$q & (q$1 != 'h0);
+        out_neg$1$d = neg_q2$1$q & ((sum_q$1$q & nz_mask_q$q) != 'h0);
         q_neg$1 = out_neg$1$q;
         q_mag$1 = out_mag$1$q;
         neg_q$2$clock = clock;
@@ -8071,21 +8402,54 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$2$d = neg$2;
         mag_q$2$d = mag$2;
         neg_q2$2$d = neg_q$2$q;
-        sum_q$2$d = mag_q$2$q + half;
-        if (neg_q$2$q & (s_q$q > 'h0)) begin
-            sum_q$2$d = mag_q$2$q + half - 'h1;
+        sum_q$2$d = mag_q$2$q + half_q$q;
+        if (neg_q$2$q) begin
+            sum_q$2$d = mag_q$2$q + half_m1_q$q;
         end
-        q$2 = sum_q$2$q >> s_q2$q;
-        if (q$2 > limit) begin
-            q$2 = limit;
+        out_mag$2$d = q$2 & mask;
+        if ((sum_q$2$q & sat_mask_q$q) != 'h0) begin
+            out_mag$2$d = mask;
         end
-        out_mag$2$d = q$2[('h0)+:(7)] & mask;
-        out_neg$2$d = neg_q2$2$q & (q$2 != 'h0);
+        out_neg$2$d = neg_q2$2$q & ((sum_q$2$q & nz_mask_q$q) != 'h0);
         q_neg$2 = out_neg$2$q;
         q_mag$2 = out_mag$2$q;
     end
     
 endmodule // top$pipeline$shade$0$normal
+module top$pipeline$shade$0$normal$half_m1_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$normal$half_m1_q
+module top$pipeline$shade$0$normal$half_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$normal$half_q
 module top$pipeline$shade$0$normal$mag_q$0(d,q,clock);
     
     // Module arguments
@@ -8239,6 +8603,23 @@ module top$pipeline$shade$0$normal$neg_q2$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$normal$neg_q2$2
+module top$pipeline$shade$0$normal$nz_mask_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$normal$nz_mask_q
 module top$pipeline$shade$0$normal$out_mag$0(d,q,clock);
     
     // Module arguments
@@ -8375,6 +8756,40 @@ module top$pipeline$shade$0$normal$s_q2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$normal$s_q2
+module top$pipeline$shade$0$normal$sat_mask_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$normal$sat_mask_q
+module top$pipeline$shade$0$normal$smear_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$normal$smear_q
 module top$pipeline$shade$0$normal$sum_q$0(d,q,clock);
     
     // Module arguments
@@ -8579,6 +8994,23 @@ module top$pipeline$shade$0$specular_q(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$specular_q
+module top$pipeline$shade$0$specular_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$specular_qq
 module top$pipeline$shade$0$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -8698,6 +9130,40 @@ module top$pipeline$shade$0$valid_q$14(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$valid_q$14
+module top$pipeline$shade$0$valid_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$valid_q$15
+module top$pipeline$shade$0$valid_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$valid_q$16
 module top$pipeline$shade$0$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -8936,6 +9402,40 @@ module top$pipeline$shade$0$value_q$13(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$value_q$13
+module top$pipeline$shade$0$value_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$value_q$14
+module top$pipeline$shade$0$value_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$value_q$15
 module top$pipeline$shade$0$value_q$2(d,q,clock);
     
     // Module arguments
@@ -9249,6 +9749,12 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] alpha_q$8$d;
     wire  [15:0] alpha_q$8$q;
     reg  alpha_q$8$clock;
+    reg  [15:0] alpha_q$9$d;
+    wire  [15:0] alpha_q$9$q;
+    reg  alpha_q$9$clock;
+    reg  [15:0] alpha_q$10$d;
+    wire  [15:0] alpha_q$10$q;
+    reg  alpha_q$10$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -9291,6 +9797,12 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] value_q$13$d;
     wire  [15:0] value_q$13$q;
     reg  value_q$13$clock;
+    reg  [15:0] value_q$14$d;
+    wire  [15:0] value_q$14$q;
+    reg  value_q$14$clock;
+    reg  [15:0] value_q$15$d;
+    wire  [15:0] value_q$15$q;
+    reg  value_q$15$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -9336,9 +9848,18 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  valid_q$14$d;
     wire  valid_q$14$q;
     reg  valid_q$14$clock;
+    reg  valid_q$15$d;
+    wire  valid_q$15$q;
+    reg  valid_q$15$clock;
+    reg  valid_q$16$d;
+    wire  valid_q$16$q;
+    reg  valid_q$16$clock;
     reg  [15:0] specular_q$d;
     wire  [15:0] specular_q$q;
     reg  specular_q$clock;
+    reg  [15:0] specular_qq$d;
+    wire  [15:0] specular_qq$q;
+    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
@@ -9601,6 +10122,16 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         .q(alpha_q$8$q),
         .clock(alpha_q$8$clock)
     );
+    top$pipeline$shade$1$alpha_q$9 alpha_q$9(
+        .d(alpha_q$9$d),
+        .q(alpha_q$9$q),
+        .clock(alpha_q$9$clock)
+    );
+    top$pipeline$shade$1$alpha_q$10 alpha_q$10(
+        .d(alpha_q$10$d),
+        .q(alpha_q$10$q),
+        .clock(alpha_q$10$clock)
+    );
     top$pipeline$shade$1$value_q$0 value_q$0(
         .d(value_q$0$d),
         .q(value_q$0$q),
@@ -9670,6 +10201,16 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         .d(value_q$13$d),
         .q(value_q$13$q),
         .clock(value_q$13$clock)
+    );
+    top$pipeline$shade$1$value_q$14 value_q$14(
+        .d(value_q$14$d),
+        .q(value_q$14$q),
+        .clock(value_q$14$clock)
+    );
+    top$pipeline$shade$1$value_q$15 value_q$15(
+        .d(value_q$15$d),
+        .q(value_q$15$q),
+        .clock(value_q$15$clock)
     );
     top$pipeline$shade$1$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -9746,10 +10287,25 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         .q(valid_q$14$q),
         .clock(valid_q$14$clock)
     );
+    top$pipeline$shade$1$valid_q$15 valid_q$15(
+        .d(valid_q$15$d),
+        .q(valid_q$15$q),
+        .clock(valid_q$15$clock)
+    );
+    top$pipeline$shade$1$valid_q$16 valid_q$16(
+        .d(valid_q$16$d),
+        .q(valid_q$16$q),
+        .clock(valid_q$16$clock)
+    );
     top$pipeline$shade$1$specular_q specular_q(
         .d(specular_q$d),
         .q(specular_q$q),
         .clock(specular_q$clock)
+    );
+    top$pipeline$shade$1$specular_qq specular_qq(
+        .d(specular_qq$d),
+        .q(specular_qq$q),
+        .clock(specular_qq$clock)
     );
     top$pipeline$shade$1$lit_r lit_r(
         .clock(lit_r$clock),
@@ -9831,11 +10387,13 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  valid_pass;
     always @(*) begin
         specular_q$clock = clock;
+        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
         specular_q$d = specular_q$q;
+        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -9911,23 +10469,25 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         row_q$2$d = row_q$1$q;
         row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        alpha_q$3$clock = clock;
         lut_q$4$clock = clock;
-        alpha_q$4$clock = clock;
         lut_q$5$clock = clock;
-        alpha_q$5$clock = clock;
         lut_q$6$clock = clock;
-        alpha_q$6$clock = clock;
         lut_q$7$clock = clock;
-        alpha_q$7$clock = clock;
         lut_q$8$clock = clock;
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$2$clock = clock;
+        alpha_q$3$clock = clock;
+        alpha_q$4$clock = clock;
+        alpha_q$5$clock = clock;
+        alpha_q$6$clock = clock;
+        alpha_q$7$clock = clock;
         alpha_q$8$clock = clock;
+        alpha_q$9$clock = clock;
+        alpha_q$10$clock = clock;
         lut_q$0$d = lut$data;
         lut_q$1$d = lut_q$0$q;
         lut_q$2$d = lut_q$1$q;
@@ -9961,6 +10521,8 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         value_q$11$clock = clock;
         value_q$12$clock = clock;
         value_q$13$clock = clock;
+        value_q$14$clock = clock;
+        value_q$15$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -9976,6 +10538,8 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         valid_q$12$clock = clock;
         valid_q$13$clock = clock;
         valid_q$14$clock = clock;
+        valid_q$15$clock = clock;
+        valid_q$16$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -9991,6 +10555,8 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         value_q$11$d = value_q$10$q;
         value_q$12$d = value_q$11$q;
         value_q$13$d = value_q$12$q;
+        value_q$14$d = value_q$13$q;
+        value_q$15$d = value_q$14$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
@@ -10005,6 +10571,8 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         valid_q$12$d = valid_q$11$q;
         valid_q$13$d = valid_q$12$q;
         valid_q$14$d = valid_q$13$q;
+        valid_q$15$d = valid_q$14$q;
+        valid_q$16$d = valid_q$15$q;
         alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
@@ -10022,6 +10590,8 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         alpha_q$6$d = alpha_q$5$q;
         alpha_q$7$d = alpha_q$6$q;
         alpha_q$8$d = alpha_q$7$q;
+        alpha_q$9$d = alpha_q$8$q;
+        alpha_q$10$d = alpha_q$9$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
@@ -10029,15 +10599,16 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
             specular = lighting$specular;
         end
         specular_q$d = specular;
+        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
+        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -10056,17 +10627,17 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$7$q;
-        mul_g$b = alpha_q$7$q;
-        mul_b$b = alpha_q$7$q;
+        mul_r$b = alpha_q$8$q;
+        mul_g$b = alpha_q$8$q;
+        mul_b$b = alpha_q$8$q;
         if (scalar) begin
-            r_q$d = value_q$13$q;
+            r_q$d = value_q$15$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$8$q;
+            r_q$d = alpha_q$10$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -10075,7 +10646,7 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$8$q;
+            a_q$d = alpha_q$10$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -10087,7 +10658,7 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$14$q;
+            valid_pass = valid_q$16$q;
         end
         r = r_pass;
         g = g_pass;
@@ -10148,6 +10719,23 @@ module top$pipeline$shade$1$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$alpha_q$1
+module top$pipeline$shade$1$alpha_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$alpha_q$10
 module top$pipeline$shade$1$alpha_q$2(d,q,clock);
     
     // Module arguments
@@ -10267,6 +10855,23 @@ module top$pipeline$shade$1$alpha_q$8(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$alpha_q$8
+module top$pipeline$shade$1$alpha_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$alpha_q$9
 module top$pipeline$shade$1$b_q(d,q,clock);
     
     // Module arguments
@@ -16108,11 +16713,19 @@ module top$pipeline$shade$1$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$1$lit_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$1$lit_b$t t(
         .d(t$d),
         .q(t$q),
@@ -16122,9 +16735,12 @@ module top$pipeline$shade$1$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -16133,6 +16749,23 @@ module top$pipeline$shade$1$lit_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$lit_b
+module top$pipeline$shade$1$lit_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_b$p
 module top$pipeline$shade$1$lit_b$t(d,q,clock);
     
     // Module arguments
@@ -16164,11 +16797,19 @@ module top$pipeline$shade$1$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$1$lit_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$1$lit_g$t t(
         .d(t$d),
         .q(t$q),
@@ -16178,9 +16819,12 @@ module top$pipeline$shade$1$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -16189,6 +16833,23 @@ module top$pipeline$shade$1$lit_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$lit_g
+module top$pipeline$shade$1$lit_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_g$p
 module top$pipeline$shade$1$lit_g$t(d,q,clock);
     
     // Module arguments
@@ -16220,11 +16881,19 @@ module top$pipeline$shade$1$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$1$lit_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$1$lit_r$t t(
         .d(t$d),
         .q(t$q),
@@ -16234,9 +16903,12 @@ module top$pipeline$shade$1$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -16245,6 +16917,23 @@ module top$pipeline$shade$1$lit_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$lit_r
+module top$pipeline$shade$1$lit_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_r$p
 module top$pipeline$shade$1$lit_r$t(d,q,clock);
     
     // Module arguments
@@ -16550,11 +17239,19 @@ module top$pipeline$shade$1$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$1$mul_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$1$mul_b$t t(
         .d(t$d),
         .q(t$q),
@@ -16564,9 +17261,12 @@ module top$pipeline$shade$1$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -16575,6 +17275,23 @@ module top$pipeline$shade$1$mul_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$mul_b
+module top$pipeline$shade$1$mul_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$mul_b$p
 module top$pipeline$shade$1$mul_b$t(d,q,clock);
     
     // Module arguments
@@ -16606,11 +17323,19 @@ module top$pipeline$shade$1$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$1$mul_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$1$mul_g$t t(
         .d(t$d),
         .q(t$q),
@@ -16620,9 +17345,12 @@ module top$pipeline$shade$1$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -16631,6 +17359,23 @@ module top$pipeline$shade$1$mul_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$mul_g
+module top$pipeline$shade$1$mul_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$mul_g$p
 module top$pipeline$shade$1$mul_g$t(d,q,clock);
     
     // Module arguments
@@ -16662,11 +17407,19 @@ module top$pipeline$shade$1$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$1$mul_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$1$mul_r$t t(
         .d(t$d),
         .q(t$q),
@@ -16676,9 +17429,12 @@ module top$pipeline$shade$1$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -16687,6 +17443,23 @@ module top$pipeline$shade$1$mul_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$mul_r
+module top$pipeline$shade$1$mul_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$mul_r$p
 module top$pipeline$shade$1$mul_r$t(d,q,clock);
     
     // Module arguments
@@ -16805,6 +17578,7 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     localparam  bit_len$29 = 8'h1e;
     localparam  bit_len$30 = 8'h1f;
     localparam  bit_len$31 = 8'h20;
+    localparam  one = 8'h1;
     localparam  mag_bits = 8'h5;
     localparam  limit = 'h1f;
     localparam  mask = 7'b11111;
@@ -16831,6 +17605,15 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     reg  [31:0] mag_q$2$d;
     wire  [31:0] mag_q$2$q;
     reg  mag_q$2$clock;
+    reg  [31:0] smear_q$d;
+    wire  [31:0] smear_q$q;
+    reg  smear_q$clock;
+    reg  [31:0] half_q$d;
+    wire  [31:0] half_q$q;
+    reg  half_q$clock;
+    reg  [31:0] half_m1_q$d;
+    wire  [31:0] half_m1_q$q;
+    reg  half_m1_q$clock;
     reg  [7:0] s_q2$d;
     wire  [7:0] s_q2$q;
     reg  s_q2$clock;
@@ -16852,6 +17635,12 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     reg  [31:0] sum_q$2$d;
     wire  [31:0] sum_q$2$q;
     reg  sum_q$2$clock;
+    reg  [31:0] nz_mask_q$d;
+    wire  [31:0] nz_mask_q$q;
+    reg  nz_mask_q$clock;
+    reg  [31:0] sat_mask_q$d;
+    wire  [31:0] sat_mask_q$q;
+    reg  sat_mask_q$clock;
     reg  out_neg$0$d;
     wire  out_neg$0$q;
     reg  out_neg$0$clock;
@@ -16874,10 +17663,10 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     // Local signals
     reg  [31:0] m;
     reg  [7:0] bl;
-    reg  [31:0] half;
-    reg  [31:0] q$0;
-    reg  [31:0] q$1;
-    reg  [31:0] q$2;
+    reg  [31:0] smear;
+    reg  [6:0] q$0;
+    reg  [6:0] q$1;
+    reg  [6:0] q$2;
     
     // Sub module instances
     top$pipeline$shade$1$normal$s_q s_q(
@@ -16915,6 +17704,21 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         .q(mag_q$2$q),
         .clock(mag_q$2$clock)
     );
+    top$pipeline$shade$1$normal$smear_q smear_q(
+        .d(smear_q$d),
+        .q(smear_q$q),
+        .clock(smear_q$clock)
+    );
+    top$pipeline$shade$1$normal$half_q half_q(
+        .d(half_q$d),
+        .q(half_q$q),
+        .clock(half_q$clock)
+    );
+    top$pipeline$shade$1$normal$half_m1_q half_m1_q(
+        .d(half_m1_q$d),
+        .q(half_m1_q$q),
+        .clock(half_m1_q$clock)
+    );
     top$pipeline$shade$1$normal$s_q2 s_q2(
         .d(s_q2$d),
         .q(s_q2$q),
@@ -16949,6 +17753,16 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         .d(sum_q$2$d),
         .q(sum_q$2$q),
         .clock(sum_q$2$clock)
+    );
+    top$pipeline$shade$1$normal$nz_mask_q nz_mask_q(
+        .d(nz_mask_q$d),
+        .q(nz_mask_q$q),
+        .clock(nz_mask_q$clock)
+    );
+    top$pipeline$shade$1$normal$sat_mask_q sat_mask_q(
+        .d(sat_mask_q$d),
+        .q(sat_mask_q$q),
+        .clock(sat_mask_q$clock)
     );
     top$pipeline$shade$1$normal$out_neg$0 out_neg$0(
         .d(out_neg$0$d),
@@ -16985,8 +17799,18 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     always @(*) begin
         s_q$clock = clock;
         s_q2$clock = clock;
+        nz_mask_q$clock = clock;
+        sat_mask_q$clock = clock;
+        smear_q$clock = clock;
+        half_q$clock = clock;
+        half_m1_q$clock = clock;
         s_q$d = s_q$q;
         s_q2$d = s_q2$q;
+        nz_mask_q$d = nz_mask_q$q;
+        sat_mask_q$d = sat_mask_q$q;
+        smear_q$d = smear_q$q;
+        half_q$d = half_q$q;
+        half_m1_q$d = half_m1_q$q;
         m = mag$0 | mag$1 | mag$2;
         bl = 'h0;
         if (m[0]) begin
@@ -17089,11 +17913,20 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         if (bl > mag_bits) begin
             s_q$d = bl - mag_bits;
         end
-        half = 'h0;
-        if (s_q$q > 'h0) begin
-            half = (32'('h1) << s_q$q) >> 'h1;
-        end
+        smear = m | (m >> 'h1);
+        smear = smear | (smear >> 'h2);
+        smear = smear | (smear >> 'h4);
+        smear = smear | (smear >> 'h8);
+        smear = smear | (smear >> 'h10);
+        smear_q$d = smear;
+        half_q$d = (smear ^ (smear >> one)) >> mag_bits;
+        half_m1_q$d = smear >> (mag_bits + one);
         s_q2$d = s_q$q;
+        nz_mask_q$d = ~(smear_q$q >> mag_bits);
+        sat_mask_q$d = ~(smear_q$q | limit);
+        q$0 = 7'(sum_q$0$q >> s_q2$q);
+        q$1 = 7'(sum_q$1$q >> s_q2$q);
+        q$2 = 7'(sum_q$2$q >> s_q2$q);
         neg_q$0$clock = clock;
         mag_q$0$clock = clock;
         neg_q2$0$clock = clock;
@@ -17103,16 +17936,15 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$0$d = neg$0;
         mag_q$0$d = mag$0;
         neg_q2$0$d = neg_q$0$q;
-        sum_q$0$d = mag_q$0$q + half;
-        if (neg_q$0$q & (s_q$q > 'h0)) begin
-            sum_q$0$d = mag_q$0$q + half - 'h1;
+        sum_q$0$d = mag_q$0$q + half_q$q;
+        if (neg_q$0$q) begin
+            sum_q$0$d = mag_q$0$q + half_m1_q$q;
         end
-        q$0 = sum_q$0$q >> s_q2$q;
-        if (q$0 > limit) begin
-            q$0 = limit;
+        out_mag$0$d = q$0 & mask;
+        if ((sum_q$0$q & sat_mask_q$q) != 'h0) begin
+            out_mag$0$d = mask;
         end
-        out_mag$0$d = q$0[('h0)+:(7)] & mask;
-        out_neg$0$d = neg_q2$0$q & (q$0 != 'h0);
+        out_neg$0$d = neg_q2$0$q & ((sum_q$0$q & nz_mask_q$q) != 'h0);
         q_neg$0 = out_neg$0$q;
         q_mag$0 = out_mag$0$q;
         neg_q$1$clock = clock;
@@ -17124,16 +17956,15 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$1$d = neg$1;
         mag_q$1$d = mag$1;
         neg_q2$1$d = neg_q$1$q;
-        sum_q$1$d = mag_q$1$q + half;
-        if (neg_q$1$q & (s_q$q > 'h0)) begin
-            sum_q$1$d = mag_q$1$q + half - 'h1;
+        sum_q$1$d = mag_q$1$q + half_q$q;
+        if (neg_q$1$q) begin
+            sum_q$1$d = mag_q$1$q + half_m1_q$q;
         end
-        q$1 = sum_q$1$q >> s_q2$q;
-        if (q$1 > limit) begin
-            q$1 = limit;
+        out_mag$1$d = q$1 & mask;
+        if ((sum_q$1$q & sat_mask_q$q) != 'h0) begin
+            out_mag$1$d = mask;
         end
-        out_mag$1$d = q$1[('h0)+:(7)] & mask;
-        out_neg$1$d = neg_q2$1$q & (q$1 != 'h0);
+        out_neg$1$d = neg_q2$1$q & ((sum_q$1$q & nz_mask_q$q) != 'h0);
         q_neg$1 = out_neg$1$q;
         q_mag$1 = out_mag$1$q;
         neg_q$2$clock = clock;
@@ -17145,21 +17976,54 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$2$d = neg$2;
         mag_q$2$d = mag$2;
         neg_q2$2$d = neg_q$2$q;
-        sum_q$2$d = mag_q$2$q + half;
-        if (neg_q$2$q & (s_q$q > 'h0)) begin
-            sum_q$2$d = mag_q$2$q + half - 'h1;
+        sum_q$2$d = mag_q$2$q + half_q$q;
+        if (neg_q$2$q) begin
+            sum_q$2$d = mag_q$2$q + half_m1_q$q;
         end
-        q$2 = sum_q$2$q >> s_q2$q;
-        if (q$2 > limit) begin
-            q$2 = limit;
+        out_mag$2$d = q$2 & mask;
+        if ((sum_q$2$q & sat_mask_q$q) != 'h0) begin
+            out_mag$2$d = mask;
         end
-        out_mag$2$d = q$2[('h0)+:(7)] & mask;
-        out_neg$2$d = neg_q2$2$q & (q$2 != 'h0);
+        out_neg$2$d = neg_q2$2$q & ((sum_q$2$q & nz_mask_q$q) != 'h0);
         q_neg$2 = out_neg$2$q;
         q_mag$2 = out_mag$2$q;
     end
     
 endmodule // top$pipeline$shade$1$normal
+module top$pipeline$shade$1$normal$half_m1_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$normal$half_m1_q
+module top$pipeline$shade$1$normal$half_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$normal$half_q
 module top$pipeline$shade$1$normal$mag_q$0(d,q,clock);
     
     // Module arguments
@@ -17313,6 +18177,23 @@ module top$pipeline$shade$1$normal$neg_q2$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$normal$neg_q2$2
+module top$pipeline$shade$1$normal$nz_mask_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$normal$nz_mask_q
 module top$pipeline$shade$1$normal$out_mag$0(d,q,clock);
     
     // Module arguments
@@ -17449,6 +18330,40 @@ module top$pipeline$shade$1$normal$s_q2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$normal$s_q2
+module top$pipeline$shade$1$normal$sat_mask_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$normal$sat_mask_q
+module top$pipeline$shade$1$normal$smear_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$normal$smear_q
 module top$pipeline$shade$1$normal$sum_q$0(d,q,clock);
     
     // Module arguments
@@ -17653,6 +18568,23 @@ module top$pipeline$shade$1$specular_q(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$specular_q
+module top$pipeline$shade$1$specular_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$specular_qq
 module top$pipeline$shade$1$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -17772,6 +18704,40 @@ module top$pipeline$shade$1$valid_q$14(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$valid_q$14
+module top$pipeline$shade$1$valid_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$valid_q$15
+module top$pipeline$shade$1$valid_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$valid_q$16
 module top$pipeline$shade$1$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -18010,6 +18976,40 @@ module top$pipeline$shade$1$value_q$13(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$value_q$13
+module top$pipeline$shade$1$value_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$value_q$14
+module top$pipeline$shade$1$value_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$value_q$15
 module top$pipeline$shade$1$value_q$2(d,q,clock);
     
     // Module arguments
@@ -18323,6 +19323,12 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] alpha_q$8$d;
     wire  [15:0] alpha_q$8$q;
     reg  alpha_q$8$clock;
+    reg  [15:0] alpha_q$9$d;
+    wire  [15:0] alpha_q$9$q;
+    reg  alpha_q$9$clock;
+    reg  [15:0] alpha_q$10$d;
+    wire  [15:0] alpha_q$10$q;
+    reg  alpha_q$10$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -18365,6 +19371,12 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] value_q$13$d;
     wire  [15:0] value_q$13$q;
     reg  value_q$13$clock;
+    reg  [15:0] value_q$14$d;
+    wire  [15:0] value_q$14$q;
+    reg  value_q$14$clock;
+    reg  [15:0] value_q$15$d;
+    wire  [15:0] value_q$15$q;
+    reg  value_q$15$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -18410,9 +19422,18 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
     reg  valid_q$14$d;
     wire  valid_q$14$q;
     reg  valid_q$14$clock;
+    reg  valid_q$15$d;
+    wire  valid_q$15$q;
+    reg  valid_q$15$clock;
+    reg  valid_q$16$d;
+    wire  valid_q$16$q;
+    reg  valid_q$16$clock;
     reg  [15:0] specular_q$d;
     wire  [15:0] specular_q$q;
     reg  specular_q$clock;
+    reg  [15:0] specular_qq$d;
+    wire  [15:0] specular_qq$q;
+    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
@@ -18675,6 +19696,16 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
         .q(alpha_q$8$q),
         .clock(alpha_q$8$clock)
     );
+    top$pipeline$shade$2$alpha_q$9 alpha_q$9(
+        .d(alpha_q$9$d),
+        .q(alpha_q$9$q),
+        .clock(alpha_q$9$clock)
+    );
+    top$pipeline$shade$2$alpha_q$10 alpha_q$10(
+        .d(alpha_q$10$d),
+        .q(alpha_q$10$q),
+        .clock(alpha_q$10$clock)
+    );
     top$pipeline$shade$2$value_q$0 value_q$0(
         .d(value_q$0$d),
         .q(value_q$0$q),
@@ -18744,6 +19775,16 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
         .d(value_q$13$d),
         .q(value_q$13$q),
         .clock(value_q$13$clock)
+    );
+    top$pipeline$shade$2$value_q$14 value_q$14(
+        .d(value_q$14$d),
+        .q(value_q$14$q),
+        .clock(value_q$14$clock)
+    );
+    top$pipeline$shade$2$value_q$15 value_q$15(
+        .d(value_q$15$d),
+        .q(value_q$15$q),
+        .clock(value_q$15$clock)
     );
     top$pipeline$shade$2$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -18820,10 +19861,25 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
         .q(valid_q$14$q),
         .clock(valid_q$14$clock)
     );
+    top$pipeline$shade$2$valid_q$15 valid_q$15(
+        .d(valid_q$15$d),
+        .q(valid_q$15$q),
+        .clock(valid_q$15$clock)
+    );
+    top$pipeline$shade$2$valid_q$16 valid_q$16(
+        .d(valid_q$16$d),
+        .q(valid_q$16$q),
+        .clock(valid_q$16$clock)
+    );
     top$pipeline$shade$2$specular_q specular_q(
         .d(specular_q$d),
         .q(specular_q$q),
         .clock(specular_q$clock)
+    );
+    top$pipeline$shade$2$specular_qq specular_qq(
+        .d(specular_qq$d),
+        .q(specular_qq$q),
+        .clock(specular_qq$clock)
     );
     top$pipeline$shade$2$lit_r lit_r(
         .clock(lit_r$clock),
@@ -18905,11 +19961,13 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
     reg  valid_pass;
     always @(*) begin
         specular_q$clock = clock;
+        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
         specular_q$d = specular_q$q;
+        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -18985,23 +20043,25 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
         row_q$2$d = row_q$1$q;
         row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        alpha_q$3$clock = clock;
         lut_q$4$clock = clock;
-        alpha_q$4$clock = clock;
         lut_q$5$clock = clock;
-        alpha_q$5$clock = clock;
         lut_q$6$clock = clock;
-        alpha_q$6$clock = clock;
         lut_q$7$clock = clock;
-        alpha_q$7$clock = clock;
         lut_q$8$clock = clock;
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$2$clock = clock;
+        alpha_q$3$clock = clock;
+        alpha_q$4$clock = clock;
+        alpha_q$5$clock = clock;
+        alpha_q$6$clock = clock;
+        alpha_q$7$clock = clock;
         alpha_q$8$clock = clock;
+        alpha_q$9$clock = clock;
+        alpha_q$10$clock = clock;
         lut_q$0$d = lut$data;
         lut_q$1$d = lut_q$0$q;
         lut_q$2$d = lut_q$1$q;
@@ -19035,6 +20095,8 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
         value_q$11$clock = clock;
         value_q$12$clock = clock;
         value_q$13$clock = clock;
+        value_q$14$clock = clock;
+        value_q$15$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -19050,6 +20112,8 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
         valid_q$12$clock = clock;
         valid_q$13$clock = clock;
         valid_q$14$clock = clock;
+        valid_q$15$clock = clock;
+        valid_q$16$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -19065,6 +20129,8 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
         value_q$11$d = value_q$10$q;
         value_q$12$d = value_q$11$q;
         value_q$13$d = value_q$12$q;
+        value_q$14$d = value_q$13$q;
+        value_q$15$d = value_q$14$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
@@ -19079,6 +20145,8 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
         valid_q$12$d = valid_q$11$q;
         valid_q$13$d = valid_q$12$q;
         valid_q$14$d = valid_q$13$q;
+        valid_q$15$d = valid_q$14$q;
+        valid_q$16$d = valid_q$15$q;
         alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
@@ -19096,6 +20164,8 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
         alpha_q$6$d = alpha_q$5$q;
         alpha_q$7$d = alpha_q$6$q;
         alpha_q$8$d = alpha_q$7$q;
+        alpha_q$9$d = alpha_q$8$q;
+        alpha_q$10$d = alpha_q$9$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
@@ -19103,15 +20173,16 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
             specular = lighting$specular;
         end
         specular_q$d = specular;
+        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
+        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -19130,17 +20201,17 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$7$q;
-        mul_g$b = alpha_q$7$q;
-        mul_b$b = alpha_q$7$q;
+        mul_r$b = alpha_q$8$q;
+        mul_g$b = alpha_q$8$q;
+        mul_b$b = alpha_q$8$q;
         if (scalar) begin
-            r_q$d = value_q$13$q;
+            r_q$d = value_q$15$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$8$q;
+            r_q$d = alpha_q$10$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -19149,7 +20220,7 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$8$q;
+            a_q$d = alpha_q$10$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -19161,7 +20232,7 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$14$q;
+            valid_pass = valid_q$16$q;
         end
         r = r_pass;
         g = g_pass;
@@ -19222,6 +20293,23 @@ module top$pipeline$shade$2$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$2$alpha_q$1
+module top$pipeline$shade$2$alpha_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$alpha_q$10
 module top$pipeline$shade$2$alpha_q$2(d,q,clock);
     
     // Module arguments
@@ -19341,6 +20429,23 @@ module top$pipeline$shade$2$alpha_q$8(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$2$alpha_q$8
+module top$pipeline$shade$2$alpha_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$alpha_q$9
 module top$pipeline$shade$2$b_q(d,q,clock);
     
     // Module arguments
@@ -25182,11 +26287,19 @@ module top$pipeline$shade$2$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$2$lit_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$2$lit_b$t t(
         .d(t$d),
         .q(t$q),
@@ -25196,9 +26309,12 @@ module top$pipeline$shade$2$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -25207,6 +26323,23 @@ module top$pipeline$shade$2$lit_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$2$lit_b
+module top$pipeline$shade$2$lit_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$lit_b$p
 module top$pipeline$shade$2$lit_b$t(d,q,clock);
     
     // Module arguments
@@ -25238,11 +26371,19 @@ module top$pipeline$shade$2$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$2$lit_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$2$lit_g$t t(
         .d(t$d),
         .q(t$q),
@@ -25252,9 +26393,12 @@ module top$pipeline$shade$2$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -25263,6 +26407,23 @@ module top$pipeline$shade$2$lit_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$2$lit_g
+module top$pipeline$shade$2$lit_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$lit_g$p
 module top$pipeline$shade$2$lit_g$t(d,q,clock);
     
     // Module arguments
@@ -25294,11 +26455,19 @@ module top$pipeline$shade$2$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$2$lit_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$2$lit_r$t t(
         .d(t$d),
         .q(t$q),
@@ -25308,9 +26477,12 @@ module top$pipeline$shade$2$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -25319,6 +26491,23 @@ module top$pipeline$shade$2$lit_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$2$lit_r
+module top$pipeline$shade$2$lit_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$lit_r$p
 module top$pipeline$shade$2$lit_r$t(d,q,clock);
     
     // Module arguments
@@ -25624,11 +26813,19 @@ module top$pipeline$shade$2$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$2$mul_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$2$mul_b$t t(
         .d(t$d),
         .q(t$q),
@@ -25638,9 +26835,12 @@ module top$pipeline$shade$2$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -25649,6 +26849,23 @@ module top$pipeline$shade$2$mul_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$2$mul_b
+module top$pipeline$shade$2$mul_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$mul_b$p
 module top$pipeline$shade$2$mul_b$t(d,q,clock);
     
     // Module arguments
@@ -25680,11 +26897,19 @@ module top$pipeline$shade$2$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$2$mul_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$2$mul_g$t t(
         .d(t$d),
         .q(t$q),
@@ -25694,9 +26919,12 @@ module top$pipeline$shade$2$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -25705,6 +26933,23 @@ module top$pipeline$shade$2$mul_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$2$mul_g
+module top$pipeline$shade$2$mul_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$mul_g$p
 module top$pipeline$shade$2$mul_g$t(d,q,clock);
     
     // Module arguments
@@ -25736,11 +26981,19 @@ module top$pipeline$shade$2$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$2$mul_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$2$mul_r$t t(
         .d(t$d),
         .q(t$q),
@@ -25750,9 +27003,12 @@ module top$pipeline$shade$2$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -25761,6 +27017,23 @@ module top$pipeline$shade$2$mul_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$2$mul_r
+module top$pipeline$shade$2$mul_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$mul_r$p
 module top$pipeline$shade$2$mul_r$t(d,q,clock);
     
     // Module arguments
@@ -25879,6 +27152,7 @@ module top$pipeline$shade$2$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     localparam  bit_len$29 = 8'h1e;
     localparam  bit_len$30 = 8'h1f;
     localparam  bit_len$31 = 8'h20;
+    localparam  one = 8'h1;
     localparam  mag_bits = 8'h5;
     localparam  limit = 'h1f;
     localparam  mask = 7'b11111;
@@ -25905,6 +27179,15 @@ module top$pipeline$shade$2$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     reg  [31:0] mag_q$2$d;
     wire  [31:0] mag_q$2$q;
     reg  mag_q$2$clock;
+    reg  [31:0] smear_q$d;
+    wire  [31:0] smear_q$q;
+    reg  smear_q$clock;
+    reg  [31:0] half_q$d;
+    wire  [31:0] half_q$q;
+    reg  half_q$clock;
+    reg  [31:0] half_m1_q$d;
+    wire  [31:0] half_m1_q$q;
+    reg  half_m1_q$clock;
     reg  [7:0] s_q2$d;
     wire  [7:0] s_q2$q;
     reg  s_q2$clock;
@@ -25926,6 +27209,12 @@ module top$pipeline$shade$2$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     reg  [31:0] sum_q$2$d;
     wire  [31:0] sum_q$2$q;
     reg  sum_q$2$clock;
+    reg  [31:0] nz_mask_q$d;
+    wire  [31:0] nz_mask_q$q;
+    reg  nz_mask_q$clock;
+    reg  [31:0] sat_mask_q$d;
+    wire  [31:0] sat_mask_q$q;
+    reg  sat_mask_q$clock;
     reg  out_neg$0$d;
     wire  out_neg$0$q;
     reg  out_neg$0$clock;
@@ -25948,10 +27237,10 @@ module top$pipeline$shade$2$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     // Local signals
     reg  [31:0] m;
     reg  [7:0] bl;
-    reg  [31:0] half;
-    reg  [31:0] q$0;
-    reg  [31:0] q$1;
-    reg  [31:0] q$2;
+    reg  [31:0] smear;
+    reg  [6:0] q$0;
+    reg  [6:0] q$1;
+    reg  [6:0] q$2;
     
     // Sub module instances
     top$pipeline$shade$2$normal$s_q s_q(
@@ -25989,6 +27278,21 @@ module top$pipeline$shade$2$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         .q(mag_q$2$q),
         .clock(mag_q$2$clock)
     );
+    top$pipeline$shade$2$normal$smear_q smear_q(
+        .d(smear_q$d),
+        .q(smear_q$q),
+        .clock(smear_q$clock)
+    );
+    top$pipeline$shade$2$normal$half_q half_q(
+        .d(half_q$d),
+        .q(half_q$q),
+        .clock(half_q$clock)
+    );
+    top$pipeline$shade$2$normal$half_m1_q half_m1_q(
+        .d(half_m1_q$d),
+        .q(half_m1_q$q),
+        .clock(half_m1_q$clock)
+    );
     top$pipeline$shade$2$normal$s_q2 s_q2(
         .d(s_q2$d),
         .q(s_q2$q),
@@ -26023,6 +27327,16 @@ module top$pipeline$shade$2$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         .d(sum_q$2$d),
         .q(sum_q$2$q),
         .clock(sum_q$2$clock)
+    );
+    top$pipeline$shade$2$normal$nz_mask_q nz_mask_q(
+        .d(nz_mask_q$d),
+        .q(nz_mask_q$q),
+        .clock(nz_mask_q$clock)
+    );
+    top$pipeline$shade$2$normal$sat_mask_q sat_mask_q(
+        .d(sat_mask_q$d),
+        .q(sat_mask_q$q),
+        .clock(sat_mask_q$clock)
     );
     top$pipeline$shade$2$normal$out_neg$0 out_neg$0(
         .d(out_neg$0$d),
@@ -26059,8 +27373,18 @@ module top$pipeline$shade$2$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     always @(*) begin
         s_q$clock = clock;
         s_q2$clock = clock;
+        nz_mask_q$clock = clock;
+        sat_mask_q$clock = clock;
+        smear_q$clock = clock;
+        half_q$clock = clock;
+        half_m1_q$clock = clock;
         s_q$d = s_q$q;
         s_q2$d = s_q2$q;
+        nz_mask_q$d = nz_mask_q$q;
+        sat_mask_q$d = sat_mask_q$q;
+        smear_q$d = smear_q$q;
+        half_q$d = half_q$q;
+        half_m1_q$d = half_m1_q$q;
         m = mag$0 | mag$1 | mag$2;
         bl = 'h0;
         if (m[0]) begin
@@ -26163,11 +27487,20 @@ module top$pipeline$shade$2$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         if (bl > mag_bits) begin
             s_q$d = bl - mag_bits;
         end
-        half = 'h0;
-        if (s_q$q > 'h0) begin
-            half = (32'('h1) << s_q$q) >> 'h1;
-        end
+        smear = m | (m >> 'h1);
+        smear = smear | (smear >> 'h2);
+        smear = smear | (smear >> 'h4);
+        smear = smear | (smear >> 'h8);
+        smear = smear | (smear >> 'h10);
+        smear_q$d = smear;
+        half_q$d = (smear ^ (smear >> one)) >> mag_bits;
+        half_m1_q$d = smear >> (mag_bits + one);
         s_q2$d = s_q$q;
+        nz_mask_q$d = ~(smear_q$q >> mag_bits);
+        sat_mask_q$d = ~(smear_q$q | limit);
+        q$0 = 7'(sum_q$0$q >> s_q2$q);
+        q$1 = 7'(sum_q$1$q >> s_q2$q);
+        q$2 = 7'(sum_q$2$q >> s_q2$q);
         neg_q$0$clock = clock;
         mag_q$0$clock = clock;
         neg_q2$0$clock = clock;
@@ -26177,16 +27510,15 @@ module top$pipeline$shade$2$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$0$d = neg$0;
         mag_q$0$d = mag$0;
         neg_q2$0$d = neg_q$0$q;
-        sum_q$0$d = mag_q$0$q + half;
-        if (neg_q$0$q & (s_q$q > 'h0)) begin
-            sum_q$0$d = mag_q$0$q + half - 'h1;
+        sum_q$0$d = mag_q$0$q + half_q$q;
+        if (neg_q$0$q) begin
+            sum_q$0$d = mag_q$0$q + half_m1_q$q;
         end
-        q$0 = sum_q$0$q >> s_q2$q;
-        if (q$0 > limit) begin
-            q$0 = limit;
+        out_mag$0$d = q$0 & mask;
+        if ((sum_q$0$q & sat_mask_q$q) != 'h0) begin
+            out_mag$0$d = mask;
         end
-        out_mag$0$d = q$0[('h0)+:(7)] & mask;
-        out_neg$0$d = neg_q2$0$q & (q$0 != 'h0);
+        out_neg$0$d = neg_q2$0$q & ((sum_q$0$q & nz_mask_q$q) != 'h0);
         q_neg$0 = out_neg$0$q;
         q_mag$0 = out_mag$0$q;
         neg_q$1$clock = clock;
@@ -26198,16 +27530,15 @@ module top$pipeline$shade$2$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$1$d = neg$1;
         mag_q$1$d = mag$1;
         neg_q2$1$d = neg_q$1$q;
-        sum_q$1$d = mag_q$1$q + half;
-        if (neg_q$1$q & (s_q$q > 'h0)) begin
-            sum_q$1$d = mag_q$1$q + half - 'h1;
+        sum_q$1$d = mag_q$1$q + half_q$q;
+        if (neg_q$1$q) begin
+            sum_q$1$d = mag_q$1$q + half_m1_q$q;
         end
-        q$1 = sum_q$1$q >> s_q2$q;
-        if (q$1 > limit) begin
-            q$1 = limit;
+        out_mag$1$d = q$1 & mask;
+        if ((sum_q$1$q & sat_mask_q$q) != 'h0) begin
+            out_mag$1$d = mask;
         end
-        out_mag$1$d = q$1[('h0)+:(7)] & mask;
-        out_neg$1$d = neg_q2$1$q & (q$1 != 'h0);
+        out_neg$1$d = neg_q2$1$q & ((sum_q$1$q & nz_mask_q$q) != 'h0);
         q_neg$1 = out_neg$1$q;
         q_mag$1 = out_mag$1$q;
         neg_q$2$clock = clock;
@@ -26219,21 +27550,54 @@ module top$pipeline$shade$2$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$2$d = neg$2;
         mag_q$2$d = mag$2;
         neg_q2$2$d = neg_q$2$q;
-        sum_q$2$d = mag_q$2$q + half;
-        if (neg_q$2$q & (s_q$q > 'h0)) begin
-            sum_q$2$d = mag_q$2$q + half - 'h1;
+        sum_q$2$d = mag_q$2$q + half_q$q;
+        if (neg_q$2$q) begin
+            sum_q$2$d = mag_q$2$q + half_m1_q$q;
         end
-        q$2 = sum_q$2$q >> s_q2$q;
-        if (q$2 > limit) begin
-            q$2 = limit;
+        out_mag$2$d = q$2 & mask;
+        if ((sum_q$2$q & sat_mask_q$q) != 'h0) begin
+            out_mag$2$d = mask;
         end
-        out_mag$2$d = q$2[('h0)+:(7)] & mask;
-        out_neg$2$d = neg_q2$2$q & (q$2 != 'h0);
+        out_neg$2$d = neg_q2$2$q & ((sum_q$2$q & nz_mask_q$q) != 'h0);
         q_neg$2 = out_neg$2$q;
         q_mag$2 = out_mag$2$q;
     end
     
 endmodule // top$pipeline$shade$2$normal
+module top$pipeline$shade$2$normal$half_m1_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$normal$half_m1_q
+module top$pipeline$shade$2$normal$half_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$normal$half_q
 module top$pipeline$shade$2$normal$mag_q$0(d,q,clock);
     
     // Module arguments
@@ -26387,6 +27751,23 @@ module top$pipeline$shade$2$normal$neg_q2$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$2$normal$neg_q2$2
+module top$pipeline$shade$2$normal$nz_mask_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$normal$nz_mask_q
 module top$pipeline$shade$2$normal$out_mag$0(d,q,clock);
     
     // Module arguments
@@ -26523,6 +27904,40 @@ module top$pipeline$shade$2$normal$s_q2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$2$normal$s_q2
+module top$pipeline$shade$2$normal$sat_mask_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$normal$sat_mask_q
+module top$pipeline$shade$2$normal$smear_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$normal$smear_q
 module top$pipeline$shade$2$normal$sum_q$0(d,q,clock);
     
     // Module arguments
@@ -26727,6 +28142,23 @@ module top$pipeline$shade$2$specular_q(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$2$specular_q
+module top$pipeline$shade$2$specular_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$specular_qq
 module top$pipeline$shade$2$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -26846,6 +28278,40 @@ module top$pipeline$shade$2$valid_q$14(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$2$valid_q$14
+module top$pipeline$shade$2$valid_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$valid_q$15
+module top$pipeline$shade$2$valid_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$valid_q$16
 module top$pipeline$shade$2$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -27084,6 +28550,40 @@ module top$pipeline$shade$2$value_q$13(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$2$value_q$13
+module top$pipeline$shade$2$value_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$value_q$14
+module top$pipeline$shade$2$value_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$value_q$15
 module top$pipeline$shade$2$value_q$2(d,q,clock);
     
     // Module arguments
@@ -27397,6 +28897,12 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] alpha_q$8$d;
     wire  [15:0] alpha_q$8$q;
     reg  alpha_q$8$clock;
+    reg  [15:0] alpha_q$9$d;
+    wire  [15:0] alpha_q$9$q;
+    reg  alpha_q$9$clock;
+    reg  [15:0] alpha_q$10$d;
+    wire  [15:0] alpha_q$10$q;
+    reg  alpha_q$10$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -27439,6 +28945,12 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] value_q$13$d;
     wire  [15:0] value_q$13$q;
     reg  value_q$13$clock;
+    reg  [15:0] value_q$14$d;
+    wire  [15:0] value_q$14$q;
+    reg  value_q$14$clock;
+    reg  [15:0] value_q$15$d;
+    wire  [15:0] value_q$15$q;
+    reg  value_q$15$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -27484,9 +28996,18 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
     reg  valid_q$14$d;
     wire  valid_q$14$q;
     reg  valid_q$14$clock;
+    reg  valid_q$15$d;
+    wire  valid_q$15$q;
+    reg  valid_q$15$clock;
+    reg  valid_q$16$d;
+    wire  valid_q$16$q;
+    reg  valid_q$16$clock;
     reg  [15:0] specular_q$d;
     wire  [15:0] specular_q$q;
     reg  specular_q$clock;
+    reg  [15:0] specular_qq$d;
+    wire  [15:0] specular_qq$q;
+    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
@@ -27749,6 +29270,16 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
         .q(alpha_q$8$q),
         .clock(alpha_q$8$clock)
     );
+    top$pipeline$shade$3$alpha_q$9 alpha_q$9(
+        .d(alpha_q$9$d),
+        .q(alpha_q$9$q),
+        .clock(alpha_q$9$clock)
+    );
+    top$pipeline$shade$3$alpha_q$10 alpha_q$10(
+        .d(alpha_q$10$d),
+        .q(alpha_q$10$q),
+        .clock(alpha_q$10$clock)
+    );
     top$pipeline$shade$3$value_q$0 value_q$0(
         .d(value_q$0$d),
         .q(value_q$0$q),
@@ -27818,6 +29349,16 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
         .d(value_q$13$d),
         .q(value_q$13$q),
         .clock(value_q$13$clock)
+    );
+    top$pipeline$shade$3$value_q$14 value_q$14(
+        .d(value_q$14$d),
+        .q(value_q$14$q),
+        .clock(value_q$14$clock)
+    );
+    top$pipeline$shade$3$value_q$15 value_q$15(
+        .d(value_q$15$d),
+        .q(value_q$15$q),
+        .clock(value_q$15$clock)
     );
     top$pipeline$shade$3$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -27894,10 +29435,25 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
         .q(valid_q$14$q),
         .clock(valid_q$14$clock)
     );
+    top$pipeline$shade$3$valid_q$15 valid_q$15(
+        .d(valid_q$15$d),
+        .q(valid_q$15$q),
+        .clock(valid_q$15$clock)
+    );
+    top$pipeline$shade$3$valid_q$16 valid_q$16(
+        .d(valid_q$16$d),
+        .q(valid_q$16$q),
+        .clock(valid_q$16$clock)
+    );
     top$pipeline$shade$3$specular_q specular_q(
         .d(specular_q$d),
         .q(specular_q$q),
         .clock(specular_q$clock)
+    );
+    top$pipeline$shade$3$specular_qq specular_qq(
+        .d(specular_qq$d),
+        .q(specular_qq$q),
+        .clock(specular_qq$clock)
     );
     top$pipeline$shade$3$lit_r lit_r(
         .clock(lit_r$clock),
@@ -27979,11 +29535,13 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
     reg  valid_pass;
     always @(*) begin
         specular_q$clock = clock;
+        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
         specular_q$d = specular_q$q;
+        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -28059,23 +29617,25 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
         row_q$2$d = row_q$1$q;
         row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        alpha_q$3$clock = clock;
         lut_q$4$clock = clock;
-        alpha_q$4$clock = clock;
         lut_q$5$clock = clock;
-        alpha_q$5$clock = clock;
         lut_q$6$clock = clock;
-        alpha_q$6$clock = clock;
         lut_q$7$clock = clock;
-        alpha_q$7$clock = clock;
         lut_q$8$clock = clock;
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$2$clock = clock;
+        alpha_q$3$clock = clock;
+        alpha_q$4$clock = clock;
+        alpha_q$5$clock = clock;
+        alpha_q$6$clock = clock;
+        alpha_q$7$clock = clock;
         alpha_q$8$clock = clock;
+        alpha_q$9$clock = clock;
+        alpha_q$10$clock = clock;
         lut_q$0$d = lut$data;
         lut_q$1$d = lut_q$0$q;
         lut_q$2$d = lut_q$1$q;
@@ -28109,6 +29669,8 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
         value_q$11$clock = clock;
         value_q$12$clock = clock;
         value_q$13$clock = clock;
+        value_q$14$clock = clock;
+        value_q$15$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -28124,6 +29686,8 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
         valid_q$12$clock = clock;
         valid_q$13$clock = clock;
         valid_q$14$clock = clock;
+        valid_q$15$clock = clock;
+        valid_q$16$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -28139,6 +29703,8 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
         value_q$11$d = value_q$10$q;
         value_q$12$d = value_q$11$q;
         value_q$13$d = value_q$12$q;
+        value_q$14$d = value_q$13$q;
+        value_q$15$d = value_q$14$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
@@ -28153,6 +29719,8 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
         valid_q$12$d = valid_q$11$q;
         valid_q$13$d = valid_q$12$q;
         valid_q$14$d = valid_q$13$q;
+        valid_q$15$d = valid_q$14$q;
+        valid_q$16$d = valid_q$15$q;
         alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
@@ -28170,6 +29738,8 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
         alpha_q$6$d = alpha_q$5$q;
         alpha_q$7$d = alpha_q$6$q;
         alpha_q$8$d = alpha_q$7$q;
+        alpha_q$9$d = alpha_q$8$q;
+        alpha_q$10$d = alpha_q$9$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
@@ -28177,15 +29747,16 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
             specular = lighting$specular;
         end
         specular_q$d = specular;
+        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
+        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -28204,17 +29775,17 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$7$q;
-        mul_g$b = alpha_q$7$q;
-        mul_b$b = alpha_q$7$q;
+        mul_r$b = alpha_q$8$q;
+        mul_g$b = alpha_q$8$q;
+        mul_b$b = alpha_q$8$q;
         if (scalar) begin
-            r_q$d = value_q$13$q;
+            r_q$d = value_q$15$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$8$q;
+            r_q$d = alpha_q$10$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -28223,7 +29794,7 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$8$q;
+            a_q$d = alpha_q$10$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -28235,7 +29806,7 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$14$q;
+            valid_pass = valid_q$16$q;
         end
         r = r_pass;
         g = g_pass;
@@ -28296,6 +29867,23 @@ module top$pipeline$shade$3$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$3$alpha_q$1
+module top$pipeline$shade$3$alpha_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$alpha_q$10
 module top$pipeline$shade$3$alpha_q$2(d,q,clock);
     
     // Module arguments
@@ -28415,6 +30003,23 @@ module top$pipeline$shade$3$alpha_q$8(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$3$alpha_q$8
+module top$pipeline$shade$3$alpha_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$alpha_q$9
 module top$pipeline$shade$3$b_q(d,q,clock);
     
     // Module arguments
@@ -34256,11 +35861,19 @@ module top$pipeline$shade$3$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$3$lit_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$3$lit_b$t t(
         .d(t$d),
         .q(t$q),
@@ -34270,9 +35883,12 @@ module top$pipeline$shade$3$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -34281,6 +35897,23 @@ module top$pipeline$shade$3$lit_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$3$lit_b
+module top$pipeline$shade$3$lit_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$lit_b$p
 module top$pipeline$shade$3$lit_b$t(d,q,clock);
     
     // Module arguments
@@ -34312,11 +35945,19 @@ module top$pipeline$shade$3$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$3$lit_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$3$lit_g$t t(
         .d(t$d),
         .q(t$q),
@@ -34326,9 +35967,12 @@ module top$pipeline$shade$3$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -34337,6 +35981,23 @@ module top$pipeline$shade$3$lit_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$3$lit_g
+module top$pipeline$shade$3$lit_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$lit_g$p
 module top$pipeline$shade$3$lit_g$t(d,q,clock);
     
     // Module arguments
@@ -34368,11 +36029,19 @@ module top$pipeline$shade$3$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$3$lit_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$3$lit_r$t t(
         .d(t$d),
         .q(t$q),
@@ -34382,9 +36051,12 @@ module top$pipeline$shade$3$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -34393,6 +36065,23 @@ module top$pipeline$shade$3$lit_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$3$lit_r
+module top$pipeline$shade$3$lit_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$lit_r$p
 module top$pipeline$shade$3$lit_r$t(d,q,clock);
     
     // Module arguments
@@ -34698,11 +36387,19 @@ module top$pipeline$shade$3$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$3$mul_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$3$mul_b$t t(
         .d(t$d),
         .q(t$q),
@@ -34712,9 +36409,12 @@ module top$pipeline$shade$3$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -34723,6 +36423,23 @@ module top$pipeline$shade$3$mul_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$3$mul_b
+module top$pipeline$shade$3$mul_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$mul_b$p
 module top$pipeline$shade$3$mul_b$t(d,q,clock);
     
     // Module arguments
@@ -34754,11 +36471,19 @@ module top$pipeline$shade$3$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$3$mul_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$3$mul_g$t t(
         .d(t$d),
         .q(t$q),
@@ -34768,9 +36493,12 @@ module top$pipeline$shade$3$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -34779,6 +36507,23 @@ module top$pipeline$shade$3$mul_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$3$mul_g
+module top$pipeline$shade$3$mul_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$mul_g$p
 module top$pipeline$shade$3$mul_g$t(d,q,clock);
     
     // Module arguments
@@ -34810,11 +36555,19 @@ module top$pipeline$shade$3$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$3$mul_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$3$mul_r$t t(
         .d(t$d),
         .q(t$q),
@@ -34824,9 +36577,12 @@ module top$pipeline$shade$3$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -34835,6 +36591,23 @@ module top$pipeline$shade$3$mul_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$3$mul_r
+module top$pipeline$shade$3$mul_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$mul_r$p
 module top$pipeline$shade$3$mul_r$t(d,q,clock);
     
     // Module arguments
@@ -34953,6 +36726,7 @@ module top$pipeline$shade$3$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     localparam  bit_len$29 = 8'h1e;
     localparam  bit_len$30 = 8'h1f;
     localparam  bit_len$31 = 8'h20;
+    localparam  one = 8'h1;
     localparam  mag_bits = 8'h5;
     localparam  limit = 'h1f;
     localparam  mask = 7'b11111;
@@ -34979,6 +36753,15 @@ module top$pipeline$shade$3$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     reg  [31:0] mag_q$2$d;
     wire  [31:0] mag_q$2$q;
     reg  mag_q$2$clock;
+    reg  [31:0] smear_q$d;
+    wire  [31:0] smear_q$q;
+    reg  smear_q$clock;
+    reg  [31:0] half_q$d;
+    wire  [31:0] half_q$q;
+    reg  half_q$clock;
+    reg  [31:0] half_m1_q$d;
+    wire  [31:0] half_m1_q$q;
+    reg  half_m1_q$clock;
     reg  [7:0] s_q2$d;
     wire  [7:0] s_q2$q;
     reg  s_q2$clock;
@@ -35000,6 +36783,12 @@ module top$pipeline$shade$3$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     reg  [31:0] sum_q$2$d;
     wire  [31:0] sum_q$2$q;
     reg  sum_q$2$clock;
+    reg  [31:0] nz_mask_q$d;
+    wire  [31:0] nz_mask_q$q;
+    reg  nz_mask_q$clock;
+    reg  [31:0] sat_mask_q$d;
+    wire  [31:0] sat_mask_q$q;
+    reg  sat_mask_q$clock;
     reg  out_neg$0$d;
     wire  out_neg$0$q;
     reg  out_neg$0$clock;
@@ -35022,10 +36811,10 @@ module top$pipeline$shade$3$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     // Local signals
     reg  [31:0] m;
     reg  [7:0] bl;
-    reg  [31:0] half;
-    reg  [31:0] q$0;
-    reg  [31:0] q$1;
-    reg  [31:0] q$2;
+    reg  [31:0] smear;
+    reg  [6:0] q$0;
+    reg  [6:0] q$1;
+    reg  [6:0] q$2;
     
     // Sub module instances
     top$pipeline$shade$3$normal$s_q s_q(
@@ -35063,6 +36852,21 @@ module top$pipeline$shade$3$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         .q(mag_q$2$q),
         .clock(mag_q$2$clock)
     );
+    top$pipeline$shade$3$normal$smear_q smear_q(
+        .d(smear_q$d),
+        .q(smear_q$q),
+        .clock(smear_q$clock)
+    );
+    top$pipeline$shade$3$normal$half_q half_q(
+        .d(half_q$d),
+        .q(half_q$q),
+        .clock(half_q$clock)
+    );
+    top$pipeline$shade$3$normal$half_m1_q half_m1_q(
+        .d(half_m1_q$d),
+        .q(half_m1_q$q),
+        .clock(half_m1_q$clock)
+    );
     top$pipeline$shade$3$normal$s_q2 s_q2(
         .d(s_q2$d),
         .q(s_q2$q),
@@ -35097,6 +36901,16 @@ module top$pipeline$shade$3$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         .d(sum_q$2$d),
         .q(sum_q$2$q),
         .clock(sum_q$2$clock)
+    );
+    top$pipeline$shade$3$normal$nz_mask_q nz_mask_q(
+        .d(nz_mask_q$d),
+        .q(nz_mask_q$q),
+        .clock(nz_mask_q$clock)
+    );
+    top$pipeline$shade$3$normal$sat_mask_q sat_mask_q(
+        .d(sat_mask_q$d),
+        .q(sat_mask_q$q),
+        .clock(sat_mask_q$clock)
     );
     top$pipeline$shade$3$normal$out_neg$0 out_neg$0(
         .d(out_neg$0$d),
@@ -35133,8 +36947,18 @@ module top$pipeline$shade$3$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     always @(*) begin
         s_q$clock = clock;
         s_q2$clock = clock;
+        nz_mask_q$clock = clock;
+        sat_mask_q$clock = clock;
+        smear_q$clock = clock;
+        half_q$clock = clock;
+        half_m1_q$clock = clock;
         s_q$d = s_q$q;
         s_q2$d = s_q2$q;
+        nz_mask_q$d = nz_mask_q$q;
+        sat_mask_q$d = sat_mask_q$q;
+        smear_q$d = smear_q$q;
+        half_q$d = half_q$q;
+        half_m1_q$d = half_m1_q$q;
         m = mag$0 | mag$1 | mag$2;
         bl = 'h0;
         if (m[0]) begin
@@ -35237,11 +37061,20 @@ module top$pipeline$shade$3$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         if (bl > mag_bits) begin
             s_q$d = bl - mag_bits;
         end
-        half = 'h0;
-        if (s_q$q > 'h0) begin
-            half = (32'('h1) << s_q$q) >> 'h1;
-        end
+        smear = m | (m >> 'h1);
+        smear = smear | (smear >> 'h2);
+        smear = smear | (smear >> 'h4);
+        smear = smear | (smear >> 'h8);
+        smear = smear | (smear >> 'h10);
+        smear_q$d = smear;
+        half_q$d = (smear ^ (smear >> one)) >> mag_bits;
+        half_m1_q$d = smear >> (mag_bits + one);
         s_q2$d = s_q$q;
+        nz_mask_q$d = ~(smear_q$q >> mag_bits);
+        sat_mask_q$d = ~(smear_q$q | limit);
+        q$0 = 7'(sum_q$0$q >> s_q2$q);
+        q$1 = 7'(sum_q$1$q >> s_q2$q);
+        q$2 = 7'(sum_q$2$q >> s_q2$q);
         neg_q$0$clock = clock;
         mag_q$0$clock = clock;
         neg_q2$0$clock = clock;
@@ -35251,16 +37084,15 @@ module top$pipeline$shade$3$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$0$d = neg$0;
         mag_q$0$d = mag$0;
         neg_q2$0$d = neg_q$0$q;
-        sum_q$0$d = mag_q$0$q + half;
-        if (neg_q$0$q & (s_q$q > 'h0)) begin
-            sum_q$0$d = mag_q$0$q + half - 'h1;
+        sum_q$0$d = mag_q$0$q + half_q$q;
+        if (neg_q$0$q) begin
+            sum_q$0$d = mag_q$0$q + half_m1_q$q;
         end
-        q$0 = sum_q$0$q >> s_q2$q;
-        if (q$0 > limit) begin
-            q$0 = limit;
+        out_mag$0$d = q$0 & mask;
+        if ((sum_q$0$q & sat_mask_q$q) != 'h0) begin
+            out_mag$0$d = mask;
         end
-        out_mag$0$d = q$0[('h0)+:(7)] & mask;
-        out_neg$0$d = neg_q2$0$q & (q$0 != 'h0);
+        out_neg$0$d = neg_q2$0$q & ((sum_q$0$q & nz_mask_q$q) != 'h0);
         q_neg$0 = out_neg$0$q;
         q_mag$0 = out_mag$0$q;
         neg_q$1$clock = clock;
@@ -35272,16 +37104,15 @@ module top$pipeline$shade$3$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$1$d = neg$1;
         mag_q$1$d = mag$1;
         neg_q2$1$d = neg_q$1$q;
-        sum_q$1$d = mag_q$1$q + half;
-        if (neg_q$1$q & (s_q$q > 'h0)) begin
-            sum_q$1$d = mag_q$1$q + half - 'h1;
+        sum_q$1$d = mag_q$1$q + half_q$q;
+        if (neg_q$1$q) begin
+            sum_q$1$d = mag_q$1$q + half_m1_q$q;
         end
-        q$1 = sum_q$1$q >> s_q2$q;
-        if (q$1 > limit) begin
-            q$1 = limit;
+        out_mag$1$d = q$1 & mask;
+        if ((sum_q$1$q & sat_mask_q$q) != 'h0) begin
+            out_mag$1$d = mask;
         end
-        out_mag$1$d = q$1[('h0)+:(7)] & mask;
-        out_neg$1$d = neg_q2$1$q & (q$1 != 'h0);
+        out_neg$1$d = neg_q2$1$q & ((sum_q$1$q & nz_mask_q$q) != 'h0);
         q_neg$1 = out_neg$1$q;
         q_mag$1 = out_mag$1$q;
         neg_q$2$clock = clock;
@@ -35293,21 +37124,54 @@ module top$pipeline$shade$3$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$2$d = neg$2;
         mag_q$2$d = mag$2;
         neg_q2$2$d = neg_q$2$q;
-        sum_q$2$d = mag_q$2$q + half;
-        if (neg_q$2$q & (s_q$q > 'h0)) begin
-            sum_q$2$d = mag_q$2$q + half - 'h1;
+        sum_q$2$d = mag_q$2$q + half_q$q;
+        if (neg_q$2$q) begin
+            sum_q$2$d = mag_q$2$q + half_m1_q$q;
         end
-        q$2 = sum_q$2$q >> s_q2$q;
-        if (q$2 > limit) begin
-            q$2 = limit;
+        out_mag$2$d = q$2 & mask;
+        if ((sum_q$2$q & sat_mask_q$q) != 'h0) begin
+            out_mag$2$d = mask;
         end
-        out_mag$2$d = q$2[('h0)+:(7)] & mask;
-        out_neg$2$d = neg_q2$2$q & (q$2 != 'h0);
+        out_neg$2$d = neg_q2$2$q & ((sum_q$2$q & nz_mask_q$q) != 'h0);
         q_neg$2 = out_neg$2$q;
         q_mag$2 = out_mag$2$q;
     end
     
 endmodule // top$pipeline$shade$3$normal
+module top$pipeline$shade$3$normal$half_m1_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$normal$half_m1_q
+module top$pipeline$shade$3$normal$half_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$normal$half_q
 module top$pipeline$shade$3$normal$mag_q$0(d,q,clock);
     
     // Module arguments
@@ -35461,6 +37325,23 @@ module top$pipeline$shade$3$normal$neg_q2$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$3$normal$neg_q2$2
+module top$pipeline$shade$3$normal$nz_mask_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$normal$nz_mask_q
 module top$pipeline$shade$3$normal$out_mag$0(d,q,clock);
     
     // Module arguments
@@ -35597,6 +37478,40 @@ module top$pipeline$shade$3$normal$s_q2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$3$normal$s_q2
+module top$pipeline$shade$3$normal$sat_mask_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$normal$sat_mask_q
+module top$pipeline$shade$3$normal$smear_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$normal$smear_q
 module top$pipeline$shade$3$normal$sum_q$0(d,q,clock);
     
     // Module arguments
@@ -35801,6 +37716,23 @@ module top$pipeline$shade$3$specular_q(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$3$specular_q
+module top$pipeline$shade$3$specular_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$specular_qq
 module top$pipeline$shade$3$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -35920,6 +37852,40 @@ module top$pipeline$shade$3$valid_q$14(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$3$valid_q$14
+module top$pipeline$shade$3$valid_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$valid_q$15
+module top$pipeline$shade$3$valid_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$valid_q$16
 module top$pipeline$shade$3$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -36158,6 +38124,40 @@ module top$pipeline$shade$3$value_q$13(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$3$value_q$13
+module top$pipeline$shade$3$value_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$value_q$14
+module top$pipeline$shade$3$value_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$value_q$15
 module top$pipeline$shade$3$value_q$2(d,q,clock);
     
     // Module arguments

@@ -175,6 +175,12 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] alpha_q$8$d;
     wire  [15:0] alpha_q$8$q;
     reg  alpha_q$8$clock;
+    reg  [15:0] alpha_q$9$d;
+    wire  [15:0] alpha_q$9$q;
+    reg  alpha_q$9$clock;
+    reg  [15:0] alpha_q$10$d;
+    wire  [15:0] alpha_q$10$q;
+    reg  alpha_q$10$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -217,6 +223,12 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] value_q$13$d;
     wire  [15:0] value_q$13$q;
     reg  value_q$13$clock;
+    reg  [15:0] value_q$14$d;
+    wire  [15:0] value_q$14$q;
+    reg  value_q$14$clock;
+    reg  [15:0] value_q$15$d;
+    wire  [15:0] value_q$15$q;
+    reg  value_q$15$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -262,9 +274,18 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  valid_q$14$d;
     wire  valid_q$14$q;
     reg  valid_q$14$clock;
+    reg  valid_q$15$d;
+    wire  valid_q$15$q;
+    reg  valid_q$15$clock;
+    reg  valid_q$16$d;
+    wire  valid_q$16$q;
+    reg  valid_q$16$clock;
     reg  [15:0] specular_q$d;
     wire  [15:0] specular_q$q;
     reg  specular_q$clock;
+    reg  [15:0] specular_qq$d;
+    wire  [15:0] specular_qq$q;
+    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
@@ -527,6 +548,16 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         .q(alpha_q$8$q),
         .clock(alpha_q$8$clock)
     );
+    top$pipeline$shade$0$alpha_q$9 alpha_q$9(
+        .d(alpha_q$9$d),
+        .q(alpha_q$9$q),
+        .clock(alpha_q$9$clock)
+    );
+    top$pipeline$shade$0$alpha_q$10 alpha_q$10(
+        .d(alpha_q$10$d),
+        .q(alpha_q$10$q),
+        .clock(alpha_q$10$clock)
+    );
     top$pipeline$shade$0$value_q$0 value_q$0(
         .d(value_q$0$d),
         .q(value_q$0$q),
@@ -596,6 +627,16 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         .d(value_q$13$d),
         .q(value_q$13$q),
         .clock(value_q$13$clock)
+    );
+    top$pipeline$shade$0$value_q$14 value_q$14(
+        .d(value_q$14$d),
+        .q(value_q$14$q),
+        .clock(value_q$14$clock)
+    );
+    top$pipeline$shade$0$value_q$15 value_q$15(
+        .d(value_q$15$d),
+        .q(value_q$15$q),
+        .clock(value_q$15$clock)
     );
     top$pipeline$shade$0$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -672,10 +713,25 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         .q(valid_q$14$q),
         .clock(valid_q$14$clock)
     );
+    top$pipeline$shade$0$valid_q$15 valid_q$15(
+        .d(valid_q$15$d),
+        .q(valid_q$15$q),
+        .clock(valid_q$15$clock)
+    );
+    top$pipeline$shade$0$valid_q$16 valid_q$16(
+        .d(valid_q$16$d),
+        .q(valid_q$16$q),
+        .clock(valid_q$16$clock)
+    );
     top$pipeline$shade$0$specular_q specular_q(
         .d(specular_q$d),
         .q(specular_q$q),
         .clock(specular_q$clock)
+    );
+    top$pipeline$shade$0$specular_qq specular_qq(
+        .d(specular_qq$d),
+        .q(specular_qq$q),
+        .clock(specular_qq$clock)
     );
     top$pipeline$shade$0$lit_r lit_r(
         .clock(lit_r$clock),
@@ -757,11 +813,13 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  valid_pass;
     always @(*) begin
         specular_q$clock = clock;
+        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
         specular_q$d = specular_q$q;
+        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -837,23 +895,25 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         row_q$2$d = row_q$1$q;
         row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        alpha_q$3$clock = clock;
         lut_q$4$clock = clock;
-        alpha_q$4$clock = clock;
         lut_q$5$clock = clock;
-        alpha_q$5$clock = clock;
         lut_q$6$clock = clock;
-        alpha_q$6$clock = clock;
         lut_q$7$clock = clock;
-        alpha_q$7$clock = clock;
         lut_q$8$clock = clock;
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$2$clock = clock;
+        alpha_q$3$clock = clock;
+        alpha_q$4$clock = clock;
+        alpha_q$5$clock = clock;
+        alpha_q$6$clock = clock;
+        alpha_q$7$clock = clock;
         alpha_q$8$clock = clock;
+        alpha_q$9$clock = clock;
+        alpha_q$10$clock = clock;
         lut_q$0$d = lut$data;
         lut_q$1$d = lut_q$0$q;
         lut_q$2$d = lut_q$1$q;
@@ -887,6 +947,8 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         value_q$11$clock = clock;
         value_q$12$clock = clock;
         value_q$13$clock = clock;
+        value_q$14$clock = clock;
+        value_q$15$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -902,6 +964,8 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         valid_q$12$clock = clock;
         valid_q$13$clock = clock;
         valid_q$14$clock = clock;
+        valid_q$15$clock = clock;
+        valid_q$16$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -917,6 +981,8 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         value_q$11$d = value_q$10$q;
         value_q$12$d = value_q$11$q;
         value_q$13$d = value_q$12$q;
+        value_q$14$d = value_q$13$q;
+        value_q$15$d = value_q$14$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
@@ -931,6 +997,8 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         valid_q$12$d = valid_q$11$q;
         valid_q$13$d = valid_q$12$q;
         valid_q$14$d = valid_q$13$q;
+        valid_q$15$d = valid_q$14$q;
+        valid_q$16$d = valid_q$15$q;
         alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
@@ -948,6 +1016,8 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         alpha_q$6$d = alpha_q$5$q;
         alpha_q$7$d = alpha_q$6$q;
         alpha_q$8$d = alpha_q$7$q;
+        alpha_q$9$d = alpha_q$8$q;
+        alpha_q$10$d = alpha_q$9$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
@@ -955,15 +1025,16 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
             specular = lighting$specular;
         end
         specular_q$d = specular;
+        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
+        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -982,17 +1053,17 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$7$q;
-        mul_g$b = alpha_q$7$q;
-        mul_b$b = alpha_q$7$q;
+        mul_r$b = alpha_q$8$q;
+        mul_g$b = alpha_q$8$q;
+        mul_b$b = alpha_q$8$q;
         if (scalar) begin
-            r_q$d = value_q$13$q;
+            r_q$d = value_q$15$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$8$q;
+            r_q$d = alpha_q$10$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -1001,7 +1072,7 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$8$q;
+            a_q$d = alpha_q$10$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -1013,7 +1084,7 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$14$q;
+            valid_pass = valid_q$16$q;
         end
         r = r_pass;
         g = g_pass;
@@ -1074,6 +1145,23 @@ module top$pipeline$shade$0$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$alpha_q$1
+module top$pipeline$shade$0$alpha_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$alpha_q$10
 module top$pipeline$shade$0$alpha_q$2(d,q,clock);
     
     // Module arguments
@@ -1193,6 +1281,23 @@ module top$pipeline$shade$0$alpha_q$8(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$alpha_q$8
+module top$pipeline$shade$0$alpha_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$alpha_q$9
 module top$pipeline$shade$0$b_q(d,q,clock);
     
     // Module arguments
@@ -3914,11 +4019,19 @@ module top$pipeline$shade$0$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$0$lit_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$0$lit_b$t t(
         .d(t$d),
         .q(t$q),
@@ -3928,9 +4041,12 @@ module top$pipeline$shade$0$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -3939,6 +4055,23 @@ module top$pipeline$shade$0$lit_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$lit_b
+module top$pipeline$shade$0$lit_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_b$p
 module top$pipeline$shade$0$lit_b$t(d,q,clock);
     
     // Module arguments
@@ -3970,11 +4103,19 @@ module top$pipeline$shade$0$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$0$lit_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$0$lit_g$t t(
         .d(t$d),
         .q(t$q),
@@ -3984,9 +4125,12 @@ module top$pipeline$shade$0$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -3995,6 +4139,23 @@ module top$pipeline$shade$0$lit_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$lit_g
+module top$pipeline$shade$0$lit_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_g$p
 module top$pipeline$shade$0$lit_g$t(d,q,clock);
     
     // Module arguments
@@ -4026,11 +4187,19 @@ module top$pipeline$shade$0$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$0$lit_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$0$lit_r$t t(
         .d(t$d),
         .q(t$q),
@@ -4040,9 +4209,12 @@ module top$pipeline$shade$0$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4051,6 +4223,23 @@ module top$pipeline$shade$0$lit_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$lit_r
+module top$pipeline$shade$0$lit_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_r$p
 module top$pipeline$shade$0$lit_r$t(d,q,clock);
     
     // Module arguments
@@ -4356,11 +4545,19 @@ module top$pipeline$shade$0$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$0$mul_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$0$mul_b$t t(
         .d(t$d),
         .q(t$q),
@@ -4370,9 +4567,12 @@ module top$pipeline$shade$0$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4381,6 +4581,23 @@ module top$pipeline$shade$0$mul_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$mul_b
+module top$pipeline$shade$0$mul_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$mul_b$p
 module top$pipeline$shade$0$mul_b$t(d,q,clock);
     
     // Module arguments
@@ -4412,11 +4629,19 @@ module top$pipeline$shade$0$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$0$mul_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$0$mul_g$t t(
         .d(t$d),
         .q(t$q),
@@ -4426,9 +4651,12 @@ module top$pipeline$shade$0$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4437,6 +4665,23 @@ module top$pipeline$shade$0$mul_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$mul_g
+module top$pipeline$shade$0$mul_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$mul_g$p
 module top$pipeline$shade$0$mul_g$t(d,q,clock);
     
     // Module arguments
@@ -4468,11 +4713,19 @@ module top$pipeline$shade$0$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$0$mul_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$0$mul_r$t t(
         .d(t$d),
         .q(t$q),
@@ -4482,9 +4735,12 @@ module top$pipeline$shade$0$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4493,6 +4749,23 @@ module top$pipeline$shade$0$mul_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$mul_r
+module top$pipeline$shade$0$mul_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$mul_r$p
 module top$pipeline$shade$0$mul_r$t(d,q,clock);
     
     // Module arguments
@@ -4611,6 +4884,7 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     localparam  bit_len$29 = 8'h1e;
     localparam  bit_len$30 = 8'h1f;
     localparam  bit_len$31 = 8'h20;
+    localparam  one = 8'h1;
     localparam  mag_bits = 8'h4;
     localparam  limit = 'hf;
     localparam  mask = 7'b1111;
@@ -4637,6 +4911,15 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     reg  [31:0] mag_q$2$d;
     wire  [31:0] mag_q$2$q;
     reg  mag_q$2$clock;
+    reg  [31:0] smear_q$d;
+    wire  [31:0] smear_q$q;
+    reg  smear_q$clock;
+    reg  [31:0] half_q$d;
+    wire  [31:0] half_q$q;
+    reg  half_q$clock;
+    reg  [31:0] half_m1_q$d;
+    wire  [31:0] half_m1_q$q;
+    reg  half_m1_q$clock;
     reg  [7:0] s_q2$d;
     wire  [7:0] s_q2$q;
     reg  s_q2$clock;
@@ -4658,6 +4941,12 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     reg  [31:0] sum_q$2$d;
     wire  [31:0] sum_q$2$q;
     reg  sum_q$2$clock;
+    reg  [31:0] nz_mask_q$d;
+    wire  [31:0] nz_mask_q$q;
+    reg  nz_mask_q$clock;
+    reg  [31:0] sat_mask_q$d;
+    wire  [31:0] sat_mask_q$q;
+    reg  sat_mask_q$clock;
     reg  out_neg$0$d;
     wire  out_neg$0$q;
     reg  out_neg$0$clock;
@@ -4680,10 +4969,10 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     // Local signals
     reg  [31:0] m;
     reg  [7:0] bl;
-    reg  [31:0] half;
-    reg  [31:0] q$0;
-    reg  [31:0] q$1;
-    reg  [31:0] q$2;
+    reg  [31:0] smear;
+    reg  [6:0] q$0;
+    reg  [6:0] q$1;
+    reg  [6:0] q$2;
     
     // Sub module instances
     top$pipeline$shade$0$normal$s_q s_q(
@@ -4721,6 +5010,21 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         .q(mag_q$2$q),
         .clock(mag_q$2$clock)
     );
+    top$pipeline$shade$0$normal$smear_q smear_q(
+        .d(smear_q$d),
+        .q(smear_q$q),
+        .clock(smear_q$clock)
+    );
+    top$pipeline$shade$0$normal$half_q half_q(
+        .d(half_q$d),
+        .q(half_q$q),
+        .clock(half_q$clock)
+    );
+    top$pipeline$shade$0$normal$half_m1_q half_m1_q(
+        .d(half_m1_q$d),
+        .q(half_m1_q$q),
+        .clock(half_m1_q$clock)
+    );
     top$pipeline$shade$0$normal$s_q2 s_q2(
         .d(s_q2$d),
         .q(s_q2$q),
@@ -4755,6 +5059,16 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         .d(sum_q$2$d),
         .q(sum_q$2$q),
         .clock(sum_q$2$clock)
+    );
+    top$pipeline$shade$0$normal$nz_mask_q nz_mask_q(
+        .d(nz_mask_q$d),
+        .q(nz_mask_q$q),
+        .clock(nz_mask_q$clock)
+    );
+    top$pipeline$shade$0$normal$sat_mask_q sat_mask_q(
+        .d(sat_mask_q$d),
+        .q(sat_mask_q$q),
+        .clock(sat_mask_q$clock)
     );
     top$pipeline$shade$0$normal$out_neg$0 out_neg$0(
         .d(out_neg$0$d),
@@ -4791,8 +5105,18 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     always @(*) begin
         s_q$clock = clock;
         s_q2$clock = clock;
+        nz_mask_q$clock = clock;
+        sat_mask_q$clock = clock;
+        smear_q$clock = clock;
+        half_q$clock = clock;
+        half_m1_q$clock = clock;
         s_q$d = s_q$q;
         s_q2$d = s_q2$q;
+        nz_mask_q$d = nz_mask_q$q;
+        sat_mask_q$d = sat_mask_q$q;
+        smear_q$d = smear_q$q;
+        half_q$d = half_q$q;
+        half_m1_q$d = half_m1_q$q;
         m = mag$0 | mag$1 | mag$2;
         bl = 'h0;
         if (m[0]) begin
@@ -4895,11 +5219,20 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         if (bl > mag_bits) begin
             s_q$d = bl - mag_bits;
         end
-        half = 'h0;
-        if (s_q$q > 'h0) begin
-            half = (32'('h1) << s_q$q) >> 'h1;
-        end
+        smear = m | (m >> 'h1);
+        smear = smear | (smear >> 'h2);
+        smear = smear | (smear >> 'h4);
+        smear = smear | (smear >> 'h8);
+        smear = smear | (smear >> 'h10);
+        smear_q$d = smear;
+        half_q$d = (smear ^ (smear >> one)) >> mag_bits;
+        half_m1_q$d = smear >> (mag_bits + one);
         s_q2$d = s_q$q;
+        nz_mask_q$d = ~(smear_q$q >> mag_bits);
+        sat_mask_q$d = ~(smear_q$q | limit);
+        q$0 = 7'(sum_q$0$q >> s_q2$q);
+        q$1 = 7'(sum_q$1$q >> s_q2$q);
+        q$2 = 7'(sum_q$2$q >> s_q2$q);
         neg_q$0$clock = clock;
         mag_q$0$clock = clock;
         neg_q2$0$clock = clock;
@@ -4909,16 +5242,15 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$0$d = neg$0;
         mag_q$0$d = mag$0;
         neg_q2$0$d = neg_q$0$q;
-        sum_q$0$d = mag_q$0$q + half;
-        if (neg_q$0$q & (s_q$q > 'h0)) begin
-            sum_q$0$d = mag_q$0$q + half - 'h1;
+        sum_q$0$d = mag_q$0$q + half_q$q;
+        if (neg_q$0$q) begin
+            sum_q$0$d = mag_q$0$q + half_m1_q$q;
         end
-        q$0 = sum_q$0$q >> s_q2$q;
-        if (q$0 > limit) begin
-            q$0 = limit;
+        out_mag$0$d = q$0 & mask;
+        if ((sum_q$0$q & sat_mask_q$q) != 'h0) begin
+            out_mag$0$d = mask;
         end
-        out_mag$0$d = q$0[('h0)+:(7)] & mask;
-        out_neg$0$d = neg_q2$0$q & (q$0 != 'h0);
+        out_neg$0$d = neg_q2$0$q & ((sum_q$0$q & nz_mask_q$q) != 'h0);
         q_neg$0 = out_neg$0$q;
         q_mag$0 = out_mag$0$q;
         neg_q$1$clock = clock;
@@ -4930,16 +5262,15 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$1$d = neg$1;
         mag_q$1$d = mag$1;
         neg_q2$1$d = neg_q$1$q;
-        sum_q$1$d = mag_q$1$q + half;
-        if (neg_q$1$q & (s_q$q > 'h0)) begin
-            sum_q$1$d = mag_q$1$q + half - 'h1;
+        sum_q$1$d = mag_q$1$q + half_q$q;
+        if (neg_q$1$q) begin
+            sum_q$1$d = mag_q$1$q + half_m1_q$q;
         end
-        q$1 = sum_q$1$q >> s_q2$q;
-        if (q$1 > limit) begin
-            q$1 = limit;
+        out_mag$1$d = q$1 & mask;
+        if ((sum_q$1$q & sat_mask_q$q) != 'h0) begin
+            out_mag$1$d = mask;
         end
-        out_mag$1$d = q$1[('h0)+:(7)] & mask;
-        out_neg$1$d = neg_q2$1$q & (q$1 != 'h0);
+        out_neg$1$d = neg_q2$1$q & ((sum_q$1$q & nz_mask_q$q) != 'h0);
         q_neg$1 = out_neg$1$q;
         q_mag$1 = out_mag$1$q;
         neg_q$2$clock = clock;
@@ -4951,21 +5282,54 @@ module top$pipeline$shade$0$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$2$d = neg$2;
         mag_q$2$d = mag$2;
         neg_q2$2$d = neg_q$2$q;
-        sum_q$2$d = mag_q$2$q + half;
-        if (neg_q$2$q & (s_q$q > 'h0)) begin
-            sum_q$2$d = mag_q$2$q + half - 'h1;
+        sum_q$2$d = mag_q$2$q + half_q$q;
+        if (neg_q$2$q) begin
+            sum_q$2$d = mag_q$2$q + half_m1_q$q;
         end
-        q$2 = sum_q$2$q >> s_q2$q;
-        if (q$2 > limit) begin
-            q$2 = limit;
+        out_mag$2$d = q$2 & mask;
+        if ((sum_q$2$q & sat_mask_q$q) != 'h0) begin
+            out_mag$2$d = mask;
         end
-        out_mag$2$d = q$2[('h0)+:(7)] & mask;
-        out_neg$2$d = neg_q2$2$q & (q$2 != 'h0);
+        out_neg$2$d = neg_q2$2$q & ((sum_q$2$q & nz_mask_q$q) != 'h0);
         q_neg$2 = out_neg$2$q;
         q_mag$2 = out_mag$2$q;
     end
     
 endmodule // top$pipeline$shade$0$normal
+module top$pipeline$shade$0$normal$half_m1_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$normal$half_m1_q
+module top$pipeline$shade$0$normal$half_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$normal$half_q
 module top$pipeline$shade$0$normal$mag_q$0(d,q,clock);
     
     // Module arguments
@@ -5119,6 +5483,23 @@ module top$pipeline$shade$0$normal$neg_q2$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$normal$neg_q2$2
+module top$pipeline$shade$0$normal$nz_mask_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$normal$nz_mask_q
 module top$pipeline$shade$0$normal$out_mag$0(d,q,clock);
     
     // Module arguments
@@ -5255,6 +5636,40 @@ module top$pipeline$shade$0$normal$s_q2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$normal$s_q2
+module top$pipeline$shade$0$normal$sat_mask_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$normal$sat_mask_q
+module top$pipeline$shade$0$normal$smear_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$normal$smear_q
 module top$pipeline$shade$0$normal$sum_q$0(d,q,clock);
     
     // Module arguments
@@ -5459,6 +5874,23 @@ module top$pipeline$shade$0$specular_q(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$specular_q
+module top$pipeline$shade$0$specular_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$specular_qq
 module top$pipeline$shade$0$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -5578,6 +6010,40 @@ module top$pipeline$shade$0$valid_q$14(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$valid_q$14
+module top$pipeline$shade$0$valid_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$valid_q$15
+module top$pipeline$shade$0$valid_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$valid_q$16
 module top$pipeline$shade$0$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -5816,6 +6282,40 @@ module top$pipeline$shade$0$value_q$13(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$value_q$13
+module top$pipeline$shade$0$value_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$value_q$14
+module top$pipeline$shade$0$value_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$value_q$15
 module top$pipeline$shade$0$value_q$2(d,q,clock);
     
     // Module arguments
@@ -6129,6 +6629,12 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] alpha_q$8$d;
     wire  [15:0] alpha_q$8$q;
     reg  alpha_q$8$clock;
+    reg  [15:0] alpha_q$9$d;
+    wire  [15:0] alpha_q$9$q;
+    reg  alpha_q$9$clock;
+    reg  [15:0] alpha_q$10$d;
+    wire  [15:0] alpha_q$10$q;
+    reg  alpha_q$10$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -6171,6 +6677,12 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] value_q$13$d;
     wire  [15:0] value_q$13$q;
     reg  value_q$13$clock;
+    reg  [15:0] value_q$14$d;
+    wire  [15:0] value_q$14$q;
+    reg  value_q$14$clock;
+    reg  [15:0] value_q$15$d;
+    wire  [15:0] value_q$15$q;
+    reg  value_q$15$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -6216,9 +6728,18 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  valid_q$14$d;
     wire  valid_q$14$q;
     reg  valid_q$14$clock;
+    reg  valid_q$15$d;
+    wire  valid_q$15$q;
+    reg  valid_q$15$clock;
+    reg  valid_q$16$d;
+    wire  valid_q$16$q;
+    reg  valid_q$16$clock;
     reg  [15:0] specular_q$d;
     wire  [15:0] specular_q$q;
     reg  specular_q$clock;
+    reg  [15:0] specular_qq$d;
+    wire  [15:0] specular_qq$q;
+    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
@@ -6481,6 +7002,16 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         .q(alpha_q$8$q),
         .clock(alpha_q$8$clock)
     );
+    top$pipeline$shade$1$alpha_q$9 alpha_q$9(
+        .d(alpha_q$9$d),
+        .q(alpha_q$9$q),
+        .clock(alpha_q$9$clock)
+    );
+    top$pipeline$shade$1$alpha_q$10 alpha_q$10(
+        .d(alpha_q$10$d),
+        .q(alpha_q$10$q),
+        .clock(alpha_q$10$clock)
+    );
     top$pipeline$shade$1$value_q$0 value_q$0(
         .d(value_q$0$d),
         .q(value_q$0$q),
@@ -6550,6 +7081,16 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         .d(value_q$13$d),
         .q(value_q$13$q),
         .clock(value_q$13$clock)
+    );
+    top$pipeline$shade$1$value_q$14 value_q$14(
+        .d(value_q$14$d),
+        .q(value_q$14$q),
+        .clock(value_q$14$clock)
+    );
+    top$pipeline$shade$1$value_q$15 value_q$15(
+        .d(value_q$15$d),
+        .q(value_q$15$q),
+        .clock(value_q$15$clock)
     );
     top$pipeline$shade$1$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -6626,10 +7167,25 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         .q(valid_q$14$q),
         .clock(valid_q$14$clock)
     );
+    top$pipeline$shade$1$valid_q$15 valid_q$15(
+        .d(valid_q$15$d),
+        .q(valid_q$15$q),
+        .clock(valid_q$15$clock)
+    );
+    top$pipeline$shade$1$valid_q$16 valid_q$16(
+        .d(valid_q$16$d),
+        .q(valid_q$16$q),
+        .clock(valid_q$16$clock)
+    );
     top$pipeline$shade$1$specular_q specular_q(
         .d(specular_q$d),
         .q(specular_q$q),
         .clock(specular_q$clock)
+    );
+    top$pipeline$shade$1$specular_qq specular_qq(
+        .d(specular_qq$d),
+        .q(specular_qq$q),
+        .clock(specular_qq$clock)
     );
     top$pipeline$shade$1$lit_r lit_r(
         .clock(lit_r$clock),
@@ -6711,11 +7267,13 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  valid_pass;
     always @(*) begin
         specular_q$clock = clock;
+        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
         specular_q$d = specular_q$q;
+        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -6791,23 +7349,25 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         row_q$2$d = row_q$1$q;
         row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        alpha_q$3$clock = clock;
         lut_q$4$clock = clock;
-        alpha_q$4$clock = clock;
         lut_q$5$clock = clock;
-        alpha_q$5$clock = clock;
         lut_q$6$clock = clock;
-        alpha_q$6$clock = clock;
         lut_q$7$clock = clock;
-        alpha_q$7$clock = clock;
         lut_q$8$clock = clock;
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$2$clock = clock;
+        alpha_q$3$clock = clock;
+        alpha_q$4$clock = clock;
+        alpha_q$5$clock = clock;
+        alpha_q$6$clock = clock;
+        alpha_q$7$clock = clock;
         alpha_q$8$clock = clock;
+        alpha_q$9$clock = clock;
+        alpha_q$10$clock = clock;
         lut_q$0$d = lut$data;
         lut_q$1$d = lut_q$0$q;
         lut_q$2$d = lut_q$1$q;
@@ -6841,6 +7401,8 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         value_q$11$clock = clock;
         value_q$12$clock = clock;
         value_q$13$clock = clock;
+        value_q$14$clock = clock;
+        value_q$15$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -6856,6 +7418,8 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         valid_q$12$clock = clock;
         valid_q$13$clock = clock;
         valid_q$14$clock = clock;
+        valid_q$15$clock = clock;
+        valid_q$16$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -6871,6 +7435,8 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         value_q$11$d = value_q$10$q;
         value_q$12$d = value_q$11$q;
         value_q$13$d = value_q$12$q;
+        value_q$14$d = value_q$13$q;
+        value_q$15$d = value_q$14$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
@@ -6885,6 +7451,8 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         valid_q$12$d = valid_q$11$q;
         valid_q$13$d = valid_q$12$q;
         valid_q$14$d = valid_q$13$q;
+        valid_q$15$d = valid_q$14$q;
+        valid_q$16$d = valid_q$15$q;
         alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
@@ -6902,6 +7470,8 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         alpha_q$6$d = alpha_q$5$q;
         alpha_q$7$d = alpha_q$6$q;
         alpha_q$8$d = alpha_q$7$q;
+        alpha_q$9$d = alpha_q$8$q;
+        alpha_q$10$d = alpha_q$9$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
@@ -6909,15 +7479,16 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
             specular = lighting$specular;
         end
         specular_q$d = specular;
+        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
+        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -6936,17 +7507,17 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$7$q;
-        mul_g$b = alpha_q$7$q;
-        mul_b$b = alpha_q$7$q;
+        mul_r$b = alpha_q$8$q;
+        mul_g$b = alpha_q$8$q;
+        mul_b$b = alpha_q$8$q;
         if (scalar) begin
-            r_q$d = value_q$13$q;
+            r_q$d = value_q$15$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$8$q;
+            r_q$d = alpha_q$10$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -6955,7 +7526,7 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$8$q;
+            a_q$d = alpha_q$10$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -6967,7 +7538,7 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$14$q;
+            valid_pass = valid_q$16$q;
         end
         r = r_pass;
         g = g_pass;
@@ -7028,6 +7599,23 @@ module top$pipeline$shade$1$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$alpha_q$1
+module top$pipeline$shade$1$alpha_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$alpha_q$10
 module top$pipeline$shade$1$alpha_q$2(d,q,clock);
     
     // Module arguments
@@ -7147,6 +7735,23 @@ module top$pipeline$shade$1$alpha_q$8(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$alpha_q$8
+module top$pipeline$shade$1$alpha_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$alpha_q$9
 module top$pipeline$shade$1$b_q(d,q,clock);
     
     // Module arguments
@@ -9868,11 +10473,19 @@ module top$pipeline$shade$1$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$1$lit_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$1$lit_b$t t(
         .d(t$d),
         .q(t$q),
@@ -9882,9 +10495,12 @@ module top$pipeline$shade$1$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -9893,6 +10509,23 @@ module top$pipeline$shade$1$lit_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$lit_b
+module top$pipeline$shade$1$lit_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_b$p
 module top$pipeline$shade$1$lit_b$t(d,q,clock);
     
     // Module arguments
@@ -9924,11 +10557,19 @@ module top$pipeline$shade$1$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$1$lit_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$1$lit_g$t t(
         .d(t$d),
         .q(t$q),
@@ -9938,9 +10579,12 @@ module top$pipeline$shade$1$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -9949,6 +10593,23 @@ module top$pipeline$shade$1$lit_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$lit_g
+module top$pipeline$shade$1$lit_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_g$p
 module top$pipeline$shade$1$lit_g$t(d,q,clock);
     
     // Module arguments
@@ -9980,11 +10641,19 @@ module top$pipeline$shade$1$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$1$lit_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$1$lit_r$t t(
         .d(t$d),
         .q(t$q),
@@ -9994,9 +10663,12 @@ module top$pipeline$shade$1$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -10005,6 +10677,23 @@ module top$pipeline$shade$1$lit_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$lit_r
+module top$pipeline$shade$1$lit_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_r$p
 module top$pipeline$shade$1$lit_r$t(d,q,clock);
     
     // Module arguments
@@ -10310,11 +10999,19 @@ module top$pipeline$shade$1$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$1$mul_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$1$mul_b$t t(
         .d(t$d),
         .q(t$q),
@@ -10324,9 +11021,12 @@ module top$pipeline$shade$1$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -10335,6 +11035,23 @@ module top$pipeline$shade$1$mul_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$mul_b
+module top$pipeline$shade$1$mul_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$mul_b$p
 module top$pipeline$shade$1$mul_b$t(d,q,clock);
     
     // Module arguments
@@ -10366,11 +11083,19 @@ module top$pipeline$shade$1$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$1$mul_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$1$mul_g$t t(
         .d(t$d),
         .q(t$q),
@@ -10380,9 +11105,12 @@ module top$pipeline$shade$1$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -10391,6 +11119,23 @@ module top$pipeline$shade$1$mul_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$mul_g
+module top$pipeline$shade$1$mul_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$mul_g$p
 module top$pipeline$shade$1$mul_g$t(d,q,clock);
     
     // Module arguments
@@ -10422,11 +11167,19 @@ module top$pipeline$shade$1$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$pipeline$shade$1$mul_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$pipeline$shade$1$mul_r$t t(
         .d(t$d),
         .q(t$q),
@@ -10436,9 +11189,12 @@ module top$pipeline$shade$1$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -10447,6 +11203,23 @@ module top$pipeline$shade$1$mul_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$mul_r
+module top$pipeline$shade$1$mul_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$mul_r$p
 module top$pipeline$shade$1$mul_r$t(d,q,clock);
     
     // Module arguments
@@ -10565,6 +11338,7 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     localparam  bit_len$29 = 8'h1e;
     localparam  bit_len$30 = 8'h1f;
     localparam  bit_len$31 = 8'h20;
+    localparam  one = 8'h1;
     localparam  mag_bits = 8'h4;
     localparam  limit = 'hf;
     localparam  mask = 7'b1111;
@@ -10591,6 +11365,15 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     reg  [31:0] mag_q$2$d;
     wire  [31:0] mag_q$2$q;
     reg  mag_q$2$clock;
+    reg  [31:0] smear_q$d;
+    wire  [31:0] smear_q$q;
+    reg  smear_q$clock;
+    reg  [31:0] half_q$d;
+    wire  [31:0] half_q$q;
+    reg  half_q$clock;
+    reg  [31:0] half_m1_q$d;
+    wire  [31:0] half_m1_q$q;
+    reg  half_m1_q$clock;
     reg  [7:0] s_q2$d;
     wire  [7:0] s_q2$q;
     reg  s_q2$clock;
@@ -10612,6 +11395,12 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     reg  [31:0] sum_q$2$d;
     wire  [31:0] sum_q$2$q;
     reg  sum_q$2$clock;
+    reg  [31:0] nz_mask_q$d;
+    wire  [31:0] nz_mask_q$q;
+    reg  nz_mask_q$clock;
+    reg  [31:0] sat_mask_q$d;
+    wire  [31:0] sat_mask_q$q;
+    reg  sat_mask_q$clock;
     reg  out_neg$0$d;
     wire  out_neg$0$q;
     reg  out_neg$0$clock;
@@ -10634,10 +11423,10 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     // Local signals
     reg  [31:0] m;
     reg  [7:0] bl;
-    reg  [31:0] half;
-    reg  [31:0] q$0;
-    reg  [31:0] q$1;
-    reg  [31:0] q$2;
+    reg  [31:0] smear;
+    reg  [6:0] q$0;
+    reg  [6:0] q$1;
+    reg  [6:0] q$2;
     
     // Sub module instances
     top$pipeline$shade$1$normal$s_q s_q(
@@ -10675,6 +11464,21 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         .q(mag_q$2$q),
         .clock(mag_q$2$clock)
     );
+    top$pipeline$shade$1$normal$smear_q smear_q(
+        .d(smear_q$d),
+        .q(smear_q$q),
+        .clock(smear_q$clock)
+    );
+    top$pipeline$shade$1$normal$half_q half_q(
+        .d(half_q$d),
+        .q(half_q$q),
+        .clock(half_q$clock)
+    );
+    top$pipeline$shade$1$normal$half_m1_q half_m1_q(
+        .d(half_m1_q$d),
+        .q(half_m1_q$q),
+        .clock(half_m1_q$clock)
+    );
     top$pipeline$shade$1$normal$s_q2 s_q2(
         .d(s_q2$d),
         .q(s_q2$q),
@@ -10709,6 +11513,16 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         .d(sum_q$2$d),
         .q(sum_q$2$q),
         .clock(sum_q$2$clock)
+    );
+    top$pipeline$shade$1$normal$nz_mask_q nz_mask_q(
+        .d(nz_mask_q$d),
+        .q(nz_mask_q$q),
+        .clock(nz_mask_q$clock)
+    );
+    top$pipeline$shade$1$normal$sat_mask_q sat_mask_q(
+        .d(sat_mask_q$d),
+        .q(sat_mask_q$q),
+        .clock(sat_mask_q$clock)
     );
     top$pipeline$shade$1$normal$out_neg$0 out_neg$0(
         .d(out_neg$0$d),
@@ -10745,8 +11559,18 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
     always @(*) begin
         s_q$clock = clock;
         s_q2$clock = clock;
+        nz_mask_q$clock = clock;
+        sat_mask_q$clock = clock;
+        smear_q$clock = clock;
+        half_q$clock = clock;
+        half_m1_q$clock = clock;
         s_q$d = s_q$q;
         s_q2$d = s_q2$q;
+        nz_mask_q$d = nz_mask_q$q;
+        sat_mask_q$d = sat_mask_q$q;
+        smear_q$d = smear_q$q;
+        half_q$d = half_q$q;
+        half_m1_q$d = half_m1_q$q;
         m = mag$0 | mag$1 | mag$2;
         bl = 'h0;
         if (m[0]) begin
@@ -10849,11 +11673,20 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         if (bl > mag_bits) begin
             s_q$d = bl - mag_bits;
         end
-        half = 'h0;
-        if (s_q$q > 'h0) begin
-            half = (32'('h1) << s_q$q) >> 'h1;
-        end
+        smear = m | (m >> 'h1);
+        smear = smear | (smear >> 'h2);
+        smear = smear | (smear >> 'h4);
+        smear = smear | (smear >> 'h8);
+        smear = smear | (smear >> 'h10);
+        smear_q$d = smear;
+        half_q$d = (smear ^ (smear >> one)) >> mag_bits;
+        half_m1_q$d = smear >> (mag_bits + one);
         s_q2$d = s_q$q;
+        nz_mask_q$d = ~(smear_q$q >> mag_bits);
+        sat_mask_q$d = ~(smear_q$q | limit);
+        q$0 = 7'(sum_q$0$q >> s_q2$q);
+        q$1 = 7'(sum_q$1$q >> s_q2$q);
+        q$2 = 7'(sum_q$2$q >> s_q2$q);
         neg_q$0$clock = clock;
         mag_q$0$clock = clock;
         neg_q2$0$clock = clock;
@@ -10863,16 +11696,15 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$0$d = neg$0;
         mag_q$0$d = mag$0;
         neg_q2$0$d = neg_q$0$q;
-        sum_q$0$d = mag_q$0$q + half;
-        if (neg_q$0$q & (s_q$q > 'h0)) begin
-            sum_q$0$d = mag_q$0$q + half - 'h1;
+        sum_q$0$d = mag_q$0$q + half_q$q;
+        if (neg_q$0$q) begin
+            sum_q$0$d = mag_q$0$q + half_m1_q$q;
         end
-        q$0 = sum_q$0$q >> s_q2$q;
-        if (q$0 > limit) begin
-            q$0 = limit;
+        out_mag$0$d = q$0 & mask;
+        if ((sum_q$0$q & sat_mask_q$q) != 'h0) begin
+            out_mag$0$d = mask;
         end
-        out_mag$0$d = q$0[('h0)+:(7)] & mask;
-        out_neg$0$d = neg_q2$0$q & (q$0 != 'h0);
+        out_neg$0$d = neg_q2$0$q & ((sum_q$0$q & nz_mask_q$q) != 'h0);
         q_neg$0 = out_neg$0$q;
         q_mag$0 = out_mag$0$q;
         neg_q$1$clock = clock;
@@ -10884,16 +11716,15 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$1$d = neg$1;
         mag_q$1$d = mag$1;
         neg_q2$1$d = neg_q$1$q;
-        sum_q$1$d = mag_q$1$q + half;
-        if (neg_q$1$q & (s_q$q > 'h0)) begin
-            sum_q$1$d = mag_q$1$q + half - 'h1;
+        sum_q$1$d = mag_q$1$q + half_q$q;
+        if (neg_q$1$q) begin
+            sum_q$1$d = mag_q$1$q + half_m1_q$q;
         end
-        q$1 = sum_q$1$q >> s_q2$q;
-        if (q$1 > limit) begin
-            q$1 = limit;
+        out_mag$1$d = q$1 & mask;
+        if ((sum_q$1$q & sat_mask_q$q) != 'h0) begin
+            out_mag$1$d = mask;
         end
-        out_mag$1$d = q$1[('h0)+:(7)] & mask;
-        out_neg$1$d = neg_q2$1$q & (q$1 != 'h0);
+        out_neg$1$d = neg_q2$1$q & ((sum_q$1$q & nz_mask_q$q) != 'h0);
         q_neg$1 = out_neg$1$q;
         q_mag$1 = out_mag$1$q;
         neg_q$2$clock = clock;
@@ -10905,21 +11736,54 @@ module top$pipeline$shade$1$normal(clock,neg$0,neg$1,neg$2,mag$0,mag$1,mag$2,q_n
         neg_q$2$d = neg$2;
         mag_q$2$d = mag$2;
         neg_q2$2$d = neg_q$2$q;
-        sum_q$2$d = mag_q$2$q + half;
-        if (neg_q$2$q & (s_q$q > 'h0)) begin
-            sum_q$2$d = mag_q$2$q + half - 'h1;
+        sum_q$2$d = mag_q$2$q + half_q$q;
+        if (neg_q$2$q) begin
+            sum_q$2$d = mag_q$2$q + half_m1_q$q;
         end
-        q$2 = sum_q$2$q >> s_q2$q;
-        if (q$2 > limit) begin
-            q$2 = limit;
+        out_mag$2$d = q$2 & mask;
+        if ((sum_q$2$q & sat_mask_q$q) != 'h0) begin
+            out_mag$2$d = mask;
         end
-        out_mag$2$d = q$2[('h0)+:(7)] & mask;
-        out_neg$2$d = neg_q2$2$q & (q$2 != 'h0);
+        out_neg$2$d = neg_q2$2$q & ((sum_q$2$q & nz_mask_q$q) != 'h0);
         q_neg$2 = out_neg$2$q;
         q_mag$2 = out_mag$2$q;
     end
     
 endmodule // top$pipeline$shade$1$normal
+module top$pipeline$shade$1$normal$half_m1_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$normal$half_m1_q
+module top$pipeline$shade$1$normal$half_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$normal$half_q
 module top$pipeline$shade$1$normal$mag_q$0(d,q,clock);
     
     // Module arguments
@@ -11073,6 +11937,23 @@ module top$pipeline$shade$1$normal$neg_q2$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$normal$neg_q2$2
+module top$pipeline$shade$1$normal$nz_mask_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$normal$nz_mask_q
 module top$pipeline$shade$1$normal$out_mag$0(d,q,clock);
     
     // Module arguments
@@ -11209,6 +12090,40 @@ module top$pipeline$shade$1$normal$s_q2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$normal$s_q2
+module top$pipeline$shade$1$normal$sat_mask_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$normal$sat_mask_q
+module top$pipeline$shade$1$normal$smear_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$normal$smear_q
 module top$pipeline$shade$1$normal$sum_q$0(d,q,clock);
     
     // Module arguments
@@ -11413,6 +12328,23 @@ module top$pipeline$shade$1$specular_q(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$specular_q
+module top$pipeline$shade$1$specular_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$specular_qq
 module top$pipeline$shade$1$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -11532,6 +12464,40 @@ module top$pipeline$shade$1$valid_q$14(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$valid_q$14
+module top$pipeline$shade$1$valid_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$valid_q$15
+module top$pipeline$shade$1$valid_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$valid_q$16
 module top$pipeline$shade$1$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -11770,6 +12736,40 @@ module top$pipeline$shade$1$value_q$13(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$value_q$13
+module top$pipeline$shade$1$value_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$value_q$14
+module top$pipeline$shade$1$value_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$value_q$15
 module top$pipeline$shade$1$value_q$2(d,q,clock);
     
     // Module arguments

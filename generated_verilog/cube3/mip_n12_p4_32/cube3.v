@@ -172,6 +172,12 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
     reg  [31:0] shade_flags_q$13$d;
     wire  [31:0] shade_flags_q$13$q;
     reg  shade_flags_q$13$clock;
+    reg  [31:0] shade_flags_q$14$d;
+    wire  [31:0] shade_flags_q$14$q;
+    reg  shade_flags_q$14$clock;
+    reg  [31:0] shade_flags_q$15$d;
+    wire  [31:0] shade_flags_q$15$q;
+    reg  shade_flags_q$15$clock;
     reg  [31:0] rpc_flags_q$d;
     wire  [31:0] rpc_flags_q$q;
     reg  rpc_flags_q$clock;
@@ -557,6 +563,16 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         .q(shade_flags_q$13$q),
         .clock(shade_flags_q$13$clock)
     );
+    top$pipeline$shade_flags_q$14 shade_flags_q$14(
+        .d(shade_flags_q$14$d),
+        .q(shade_flags_q$14$q),
+        .clock(shade_flags_q$14$clock)
+    );
+    top$pipeline$shade_flags_q$15 shade_flags_q$15(
+        .d(shade_flags_q$15$d),
+        .q(shade_flags_q$15$q),
+        .clock(shade_flags_q$15$clock)
+    );
     top$pipeline$rpc_flags_q rpc_flags_q(
         .d(rpc_flags_q$d),
         .q(rpc_flags_q$q),
@@ -737,6 +753,8 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         shade_flags_q$11$clock = clock;
         shade_flags_q$12$clock = clock;
         shade_flags_q$13$clock = clock;
+        shade_flags_q$14$clock = clock;
+        shade_flags_q$15$clock = clock;
         shade_flags_q$0$d = leaf_flags;
         shade_flags_q$1$d = shade_flags_q$0$q;
         shade_flags_q$2$d = shade_flags_q$1$q;
@@ -751,9 +769,11 @@ module top$pipeline(clock,host_write,host_address,host_data,start,valid,cur$0,cu
         shade_flags_q$11$d = shade_flags_q$10$q;
         shade_flags_q$12$d = shade_flags_q$11$q;
         shade_flags_q$13$d = shade_flags_q$12$q;
+        shade_flags_q$14$d = shade_flags_q$13$q;
+        shade_flags_q$15$d = shade_flags_q$14$q;
         rpc_flags_q$d = leaf_flags;
         if (shaded) begin
-            rpc_flags_q$d = shade_flags_q$13$q;
+            rpc_flags_q$d = shade_flags_q$15$q;
         end
         abc$dx_neg = control$dx_neg;
         abc$dx_mag = control$dx_mag;
@@ -2024,6 +2044,40 @@ module top$pipeline$shade_flags_q$13(d,q,clock);
     end
           
 endmodule // top$pipeline$shade_flags_q$13
+module top$pipeline$shade_flags_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$14
+module top$pipeline$shade_flags_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade_flags_q$15
 module top$pipeline$shade_flags_q$2(d,q,clock);
     
     // Module arguments

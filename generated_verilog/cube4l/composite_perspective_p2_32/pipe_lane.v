@@ -85,6 +85,9 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
     output reg  [15:0] px_y;
     output reg  [2:0] px_face;
     
+    // Constant declarations
+    localparam  coord_mask = 16'h7f;
+    
     // Stub signals
     reg  feed$clock;
     reg  [63:0] feed$beats;
@@ -172,6 +175,7 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  ctl$dy_neg;
     reg  [15:0] ctl$dy_mag;
     reg  [63:0] ctl$dims;
+    reg  [15:0] ctl$coord_mask;
     wire  [15:0] ctl$x_t;
     wire  ctl$sr_t;
     wire  ctl$dx_neg_t;
@@ -387,6 +391,7 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dy_neg(ctl$dy_neg),
         .dy_mag(ctl$dy_mag),
         .dims(ctl$dims),
+        .coord_mask(ctl$coord_mask),
         .x_t(ctl$x_t),
         .sr_t(ctl$sr_t),
         .dx_neg_t(ctl$dx_neg_t),
@@ -569,6 +574,7 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         ctl$valid = feed$o_valid;
         ctl$er = feed$o_er;
         ctl$pad = feed$o_pad;
+        ctl$coord_mask = coord_mask;
         ctl$base_x = feed$o_base_x;
         ctl$base_y = feed$o_base_y;
         ctl$face = feed$o_face;
@@ -793,7 +799,7 @@ module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     end
     
 endmodule // top$lanes$0$cells
-module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -811,6 +817,7 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
     input wire  [63:0] dims;
+    input wire  [15:0] coord_mask;
     output reg  [15:0] x_t;
     output reg  sr_t;
     output reg  dx_neg_t;
@@ -863,6 +870,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] x_q$7$d;
     wire  [15:0] x_q$7$q;
     reg  x_q$7$clock;
+    reg  [15:0] x_q$8$d;
+    wire  [15:0] x_q$8$q;
+    reg  x_q$8$clock;
+    reg  [15:0] x_q$9$d;
+    wire  [15:0] x_q$9$q;
+    reg  x_q$9$clock;
     reg  [15:0] y_q$0$d;
     wire  [15:0] y_q$0$q;
     reg  y_q$0$clock;
@@ -884,6 +897,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] y_q$6$d;
     wire  [15:0] y_q$6$q;
     reg  y_q$6$clock;
+    reg  [15:0] y_q$7$d;
+    wire  [15:0] y_q$7$q;
+    reg  y_q$7$clock;
+    reg  [15:0] y_q$8$d;
+    wire  [15:0] y_q$8$q;
+    reg  y_q$8$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
@@ -908,6 +927,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  sr_q$7$d;
     wire  sr_q$7$q;
     reg  sr_q$7$clock;
+    reg  sr_q$8$d;
+    wire  sr_q$8$q;
+    reg  sr_q$8$clock;
+    reg  sr_q$9$d;
+    wire  sr_q$9$q;
+    reg  sr_q$9$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
@@ -932,6 +957,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dxn_q$7$d;
     wire  dxn_q$7$q;
     reg  dxn_q$7$clock;
+    reg  dxn_q$8$d;
+    wire  dxn_q$8$q;
+    reg  dxn_q$8$clock;
+    reg  dxn_q$9$d;
+    wire  dxn_q$9$q;
+    reg  dxn_q$9$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
@@ -956,6 +987,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] dxm_q$7$d;
     wire  [15:0] dxm_q$7$q;
     reg  dxm_q$7$clock;
+    reg  [15:0] dxm_q$8$d;
+    wire  [15:0] dxm_q$8$q;
+    reg  dxm_q$8$clock;
+    reg  [15:0] dxm_q$9$d;
+    wire  [15:0] dxm_q$9$q;
+    reg  dxm_q$9$clock;
     reg  dyn_q$0$d;
     wire  dyn_q$0$q;
     reg  dyn_q$0$clock;
@@ -980,6 +1017,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dyn_q$7$d;
     wire  dyn_q$7$q;
     reg  dyn_q$7$clock;
+    reg  dyn_q$8$d;
+    wire  dyn_q$8$q;
+    reg  dyn_q$8$clock;
+    reg  dyn_q$9$d;
+    wire  dyn_q$9$q;
+    reg  dyn_q$9$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
@@ -1004,6 +1047,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] dym_q$7$d;
     wire  [15:0] dym_q$7$q;
     reg  dym_q$7$clock;
+    reg  [15:0] dym_q$8$d;
+    wire  [15:0] dym_q$8$q;
+    reg  dym_q$8$clock;
+    reg  [15:0] dym_q$9$d;
+    wire  [15:0] dym_q$9$q;
+    reg  dym_q$9$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -1061,6 +1110,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$18$d;
     wire  v_q$18$q;
     reg  v_q$18$clock;
+    reg  v_q$19$d;
+    wire  v_q$19$q;
+    reg  v_q$19$clock;
+    reg  v_q$20$d;
+    wire  v_q$20$q;
+    reg  v_q$20$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -1118,6 +1173,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$18$d;
     wire  er_q$18$q;
     reg  er_q$18$clock;
+    reg  er_q$19$d;
+    wire  er_q$19$q;
+    reg  er_q$19$clock;
+    reg  er_q$20$d;
+    wire  er_q$20$q;
+    reg  er_q$20$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -1175,6 +1236,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$18$d;
     wire  pad_q$18$q;
     reg  pad_q$18$clock;
+    reg  pad_q$19$d;
+    wire  pad_q$19$q;
+    reg  pad_q$19$clock;
+    reg  pad_q$20$d;
+    wire  pad_q$20$q;
+    reg  pad_q$20$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -1232,6 +1299,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$18$d;
     wire  [15:0] bx_q$18$q;
     reg  bx_q$18$clock;
+    reg  [15:0] bx_q$19$d;
+    wire  [15:0] bx_q$19$q;
+    reg  bx_q$19$clock;
+    reg  [15:0] bx_q$20$d;
+    wire  [15:0] bx_q$20$q;
+    reg  bx_q$20$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -1289,6 +1362,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$18$d;
     wire  [15:0] by_q$18$q;
     reg  by_q$18$clock;
+    reg  [15:0] by_q$19$d;
+    wire  [15:0] by_q$19$q;
+    reg  by_q$19$clock;
+    reg  [15:0] by_q$20$d;
+    wire  [15:0] by_q$20$q;
+    reg  by_q$20$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -1346,6 +1425,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$18$d;
     wire  [2:0] face_q$18$q;
     reg  face_q$18$clock;
+    reg  [2:0] face_q$19$d;
+    wire  [2:0] face_q$19$q;
+    reg  face_q$19$clock;
+    reg  [2:0] face_q$20$d;
+    wire  [2:0] face_q$20$q;
+    reg  face_q$20$clock;
     
     // Sub module instances
     top$lanes$0$ctl$nx_last nx_last(
@@ -1408,6 +1493,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(x_q$7$q),
         .clock(x_q$7$clock)
     );
+    top$lanes$0$ctl$x_q$8 x_q$8(
+        .d(x_q$8$d),
+        .q(x_q$8$q),
+        .clock(x_q$8$clock)
+    );
+    top$lanes$0$ctl$x_q$9 x_q$9(
+        .d(x_q$9$d),
+        .q(x_q$9$q),
+        .clock(x_q$9$clock)
+    );
     top$lanes$0$ctl$y_q$0 y_q$0(
         .d(y_q$0$d),
         .q(y_q$0$q),
@@ -1442,6 +1537,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$6$d),
         .q(y_q$6$q),
         .clock(y_q$6$clock)
+    );
+    top$lanes$0$ctl$y_q$7 y_q$7(
+        .d(y_q$7$d),
+        .q(y_q$7$q),
+        .clock(y_q$7$clock)
+    );
+    top$lanes$0$ctl$y_q$8 y_q$8(
+        .d(y_q$8$d),
+        .q(y_q$8$q),
+        .clock(y_q$8$clock)
     );
     top$lanes$0$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -1483,6 +1588,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$7$q),
         .clock(sr_q$7$clock)
     );
+    top$lanes$0$ctl$sr_q$8 sr_q$8(
+        .d(sr_q$8$d),
+        .q(sr_q$8$q),
+        .clock(sr_q$8$clock)
+    );
+    top$lanes$0$ctl$sr_q$9 sr_q$9(
+        .d(sr_q$9$d),
+        .q(sr_q$9$q),
+        .clock(sr_q$9$clock)
+    );
     top$lanes$0$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -1522,6 +1637,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$7$d),
         .q(dxn_q$7$q),
         .clock(dxn_q$7$clock)
+    );
+    top$lanes$0$ctl$dxn_q$8 dxn_q$8(
+        .d(dxn_q$8$d),
+        .q(dxn_q$8$q),
+        .clock(dxn_q$8$clock)
+    );
+    top$lanes$0$ctl$dxn_q$9 dxn_q$9(
+        .d(dxn_q$9$d),
+        .q(dxn_q$9$q),
+        .clock(dxn_q$9$clock)
     );
     top$lanes$0$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -1563,6 +1688,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dxm_q$7$q),
         .clock(dxm_q$7$clock)
     );
+    top$lanes$0$ctl$dxm_q$8 dxm_q$8(
+        .d(dxm_q$8$d),
+        .q(dxm_q$8$q),
+        .clock(dxm_q$8$clock)
+    );
+    top$lanes$0$ctl$dxm_q$9 dxm_q$9(
+        .d(dxm_q$9$d),
+        .q(dxm_q$9$q),
+        .clock(dxm_q$9$clock)
+    );
     top$lanes$0$ctl$dyn_q$0 dyn_q$0(
         .d(dyn_q$0$d),
         .q(dyn_q$0$q),
@@ -1603,6 +1738,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dyn_q$7$q),
         .clock(dyn_q$7$clock)
     );
+    top$lanes$0$ctl$dyn_q$8 dyn_q$8(
+        .d(dyn_q$8$d),
+        .q(dyn_q$8$q),
+        .clock(dyn_q$8$clock)
+    );
+    top$lanes$0$ctl$dyn_q$9 dyn_q$9(
+        .d(dyn_q$9$d),
+        .q(dyn_q$9$q),
+        .clock(dyn_q$9$clock)
+    );
     top$lanes$0$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
         .q(dym_q$0$q),
@@ -1642,6 +1787,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dym_q$7$d),
         .q(dym_q$7$q),
         .clock(dym_q$7$clock)
+    );
+    top$lanes$0$ctl$dym_q$8 dym_q$8(
+        .d(dym_q$8$d),
+        .q(dym_q$8$q),
+        .clock(dym_q$8$clock)
+    );
+    top$lanes$0$ctl$dym_q$9 dym_q$9(
+        .d(dym_q$9$d),
+        .q(dym_q$9$q),
+        .clock(dym_q$9$clock)
     );
     top$lanes$0$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -1738,6 +1893,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$18$q),
         .clock(v_q$18$clock)
     );
+    top$lanes$0$ctl$v_q$19 v_q$19(
+        .d(v_q$19$d),
+        .q(v_q$19$q),
+        .clock(v_q$19$clock)
+    );
+    top$lanes$0$ctl$v_q$20 v_q$20(
+        .d(v_q$20$d),
+        .q(v_q$20$q),
+        .clock(v_q$20$clock)
+    );
     top$lanes$0$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -1832,6 +1997,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$18$d),
         .q(er_q$18$q),
         .clock(er_q$18$clock)
+    );
+    top$lanes$0$ctl$er_q$19 er_q$19(
+        .d(er_q$19$d),
+        .q(er_q$19$q),
+        .clock(er_q$19$clock)
+    );
+    top$lanes$0$ctl$er_q$20 er_q$20(
+        .d(er_q$20$d),
+        .q(er_q$20$q),
+        .clock(er_q$20$clock)
     );
     top$lanes$0$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -1928,6 +2103,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$18$q),
         .clock(pad_q$18$clock)
     );
+    top$lanes$0$ctl$pad_q$19 pad_q$19(
+        .d(pad_q$19$d),
+        .q(pad_q$19$q),
+        .clock(pad_q$19$clock)
+    );
+    top$lanes$0$ctl$pad_q$20 pad_q$20(
+        .d(pad_q$20$d),
+        .q(pad_q$20$q),
+        .clock(pad_q$20$clock)
+    );
     top$lanes$0$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -2022,6 +2207,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$18$d),
         .q(bx_q$18$q),
         .clock(bx_q$18$clock)
+    );
+    top$lanes$0$ctl$bx_q$19 bx_q$19(
+        .d(bx_q$19$d),
+        .q(bx_q$19$q),
+        .clock(bx_q$19$clock)
+    );
+    top$lanes$0$ctl$bx_q$20 bx_q$20(
+        .d(bx_q$20$d),
+        .q(bx_q$20$q),
+        .clock(bx_q$20$clock)
     );
     top$lanes$0$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -2118,6 +2313,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$18$q),
         .clock(by_q$18$clock)
     );
+    top$lanes$0$ctl$by_q$19 by_q$19(
+        .d(by_q$19$d),
+        .q(by_q$19$q),
+        .clock(by_q$19$clock)
+    );
+    top$lanes$0$ctl$by_q$20 by_q$20(
+        .d(by_q$20$d),
+        .q(by_q$20$q),
+        .clock(by_q$20$clock)
+    );
     top$lanes$0$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -2213,6 +2418,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$18$q),
         .clock(face_q$18$clock)
     );
+    top$lanes$0$ctl$face_q$19 face_q$19(
+        .d(face_q$19$d),
+        .q(face_q$19$q),
+        .clock(face_q$19$clock)
+    );
+    top$lanes$0$ctl$face_q$20 face_q$20(
+        .d(face_q$20$d),
+        .q(face_q$20$q),
+        .clock(face_q$20$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -2272,6 +2487,18 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$7$clock = clock;
         dyn_q$7$clock = clock;
         dym_q$7$clock = clock;
+        x_q$8$clock = clock;
+        sr_q$8$clock = clock;
+        dxn_q$8$clock = clock;
+        dxm_q$8$clock = clock;
+        dyn_q$8$clock = clock;
+        dym_q$8$clock = clock;
+        x_q$9$clock = clock;
+        sr_q$9$clock = clock;
+        dxn_q$9$clock = clock;
+        dxm_q$9$clock = clock;
+        dyn_q$9$clock = clock;
+        dym_q$9$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -2386,8 +2613,20 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$18$clock = clock;
         by_q$18$clock = clock;
         face_q$18$clock = clock;
-        x_q$0$d = x;
-        y_q$0$d = y;
+        v_q$19$clock = clock;
+        er_q$19$clock = clock;
+        pad_q$19$clock = clock;
+        bx_q$19$clock = clock;
+        by_q$19$clock = clock;
+        face_q$19$clock = clock;
+        v_q$20$clock = clock;
+        er_q$20$clock = clock;
+        pad_q$20$clock = clock;
+        bx_q$20$clock = clock;
+        by_q$20$clock = clock;
+        face_q$20$clock = clock;
+        x_q$0$d = x & coord_mask;
+        y_q$0$d = y & coord_mask;
         sr_q$0$d = sr;
         dxn_q$0$d = dx_neg;
         dxm_q$0$d = dx_mag;
@@ -2435,6 +2674,18 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$7$d = dxm_q$6$q;
         dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
+        x_q$8$d = x_q$7$q;
+        sr_q$8$d = sr_q$7$q;
+        dxn_q$8$d = dxn_q$7$q;
+        dxm_q$8$d = dxm_q$7$q;
+        dyn_q$8$d = dyn_q$7$q;
+        dym_q$8$d = dym_q$7$q;
+        x_q$9$d = x_q$8$q;
+        sr_q$9$d = sr_q$8$q;
+        dxn_q$9$d = dxn_q$8$q;
+        dxm_q$9$d = dxm_q$8$q;
+        dyn_q$9$d = dyn_q$8$q;
+        dym_q$9$d = dym_q$8$q;
         y_q$0$clock = clock;
         y_q$1$clock = clock;
         y_q$2$clock = clock;
@@ -2442,36 +2693,40 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         y_q$4$clock = clock;
         y_q$5$clock = clock;
         y_q$6$clock = clock;
+        y_q$7$clock = clock;
+        y_q$8$clock = clock;
         y_q$1$d = y_q$0$q;
         y_q$2$d = y_q$1$q;
         y_q$3$d = y_q$2$q;
         y_q$4$d = y_q$3$q;
         y_q$5$d = y_q$4$q;
         y_q$6$d = y_q$5$q;
-        x_t = x_q$7$q;
-        sr_t = sr_q$7$q;
-        dx_neg_t = dxn_q$7$q;
-        dx_mag_t = dxm_q$7$q;
-        dy_neg_t = dyn_q$7$q;
-        dy_mag_t = dym_q$7$q;
+        y_q$7$d = y_q$6$q;
+        y_q$8$d = y_q$7$q;
+        x_t = x_q$9$q;
+        sr_t = sr_q$9$q;
+        dx_neg_t = dxn_q$9$q;
+        dx_mag_t = dxm_q$9$q;
+        dy_neg_t = dyn_q$9$q;
+        dy_mag_t = dym_q$9$q;
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         x_out_q$d = 1'b0;
-        if (dxm_q$6$q != 'h0) begin
-            if (dxn_q$6$q) begin
-                x_out_q$d = x_q$6$q == nx_last$q;
+        if (dxm_q$8$q != 'h0) begin
+            if (dxn_q$8$q) begin
+                x_out_q$d = x_q$8$q == nx_last$q;
             end
             else begin
-                x_out_q$d = x_q$6$q == 'h0;
+                x_out_q$d = x_q$8$q == 'h0;
             end
         end
         y_out_q$d = 1'b0;
-        if (dym_q$6$q != 'h0) begin
-            if (dyn_q$6$q) begin
-                y_out_q$d = y_q$6$q == ny_last$q;
+        if (dym_q$8$q != 'h0) begin
+            if (dyn_q$8$q) begin
+                y_out_q$d = y_q$8$q == ny_last$q;
             end
             else begin
-                y_out_q$d = y_q$6$q == 'h0;
+                y_out_q$d = y_q$8$q == 'h0;
             end
         end
         x_out_t = x_out_q$q;
@@ -2479,8 +2734,8 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
-        bx_q$0$d = base_x;
-        by_q$0$d = base_y;
+        bx_q$0$d = base_x & coord_mask;
+        by_q$0$d = base_y & coord_mask;
         face_q$0$d = face;
         v_q$1$d = v_q$0$q;
         er_q$1$d = er_q$0$q;
@@ -2590,12 +2845,24 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$18$d = bx_q$17$q;
         by_q$18$d = by_q$17$q;
         face_q$18$d = face_q$17$q;
-        res_beat = v_q$18$q;
-        res_valid = v_q$18$q & ~pad_q$18$q;
-        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
-        px_x = bx_q$18$q;
-        px_y = by_q$18$q;
-        px_face = face_q$18$q;
+        v_q$19$d = v_q$18$q;
+        er_q$19$d = er_q$18$q;
+        pad_q$19$d = pad_q$18$q;
+        bx_q$19$d = bx_q$18$q;
+        by_q$19$d = by_q$18$q;
+        face_q$19$d = face_q$18$q;
+        v_q$20$d = v_q$19$q;
+        er_q$20$d = er_q$19$q;
+        pad_q$20$d = pad_q$19$q;
+        bx_q$20$d = bx_q$19$q;
+        by_q$20$d = by_q$19$q;
+        face_q$20$d = face_q$19$q;
+        res_beat = v_q$20$q;
+        res_valid = v_q$20$q & ~pad_q$20$q;
+        px_valid = v_q$20$q & er_q$20$q & ~pad_q$20$q;
+        px_x = bx_q$20$q;
+        px_y = by_q$20$q;
+        px_face = face_q$20$q;
     end
     
 endmodule // top$lanes$0$ctl
@@ -2786,6 +3053,23 @@ module top$lanes$0$ctl$bx_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$bx_q$18
+module top$lanes$0$ctl$bx_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$19
 module top$lanes$0$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -2803,6 +3087,23 @@ module top$lanes$0$ctl$bx_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$bx_q$2
+module top$lanes$0$ctl$bx_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$20
 module top$lanes$0$ctl$bx_q$3(d,q,clock);
     
     // Module arguments
@@ -3109,6 +3410,23 @@ module top$lanes$0$ctl$by_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$by_q$18
+module top$lanes$0$ctl$by_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$19
 module top$lanes$0$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -3126,6 +3444,23 @@ module top$lanes$0$ctl$by_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$by_q$2
+module top$lanes$0$ctl$by_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$20
 module top$lanes$0$ctl$by_q$3(d,q,clock);
     
     // Module arguments
@@ -3381,6 +3716,40 @@ module top$lanes$0$ctl$dxm_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dxm_q$7
+module top$lanes$0$ctl$dxm_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$8
+module top$lanes$0$ctl$dxm_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$9
 module top$lanes$0$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
@@ -3517,6 +3886,40 @@ module top$lanes$0$ctl$dxn_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dxn_q$7
+module top$lanes$0$ctl$dxn_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$8
+module top$lanes$0$ctl$dxn_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$9
 module top$lanes$0$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -3653,6 +4056,40 @@ module top$lanes$0$ctl$dym_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dym_q$7
+module top$lanes$0$ctl$dym_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$8
+module top$lanes$0$ctl$dym_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$9
 module top$lanes$0$ctl$dyn_q$0(d,q,clock);
     
     // Module arguments
@@ -3789,6 +4226,40 @@ module top$lanes$0$ctl$dyn_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dyn_q$7
+module top$lanes$0$ctl$dyn_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$8
+module top$lanes$0$ctl$dyn_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$9
 module top$lanes$0$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -3976,6 +4447,23 @@ module top$lanes$0$ctl$er_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$er_q$18
+module top$lanes$0$ctl$er_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$19
 module top$lanes$0$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -3993,6 +4481,23 @@ module top$lanes$0$ctl$er_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$er_q$2
+module top$lanes$0$ctl$er_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$20
 module top$lanes$0$ctl$er_q$3(d,q,clock);
     
     // Module arguments
@@ -4299,6 +4804,23 @@ module top$lanes$0$ctl$face_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$18
+module top$lanes$0$ctl$face_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$19
 module top$lanes$0$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -4316,6 +4838,23 @@ module top$lanes$0$ctl$face_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$2
+module top$lanes$0$ctl$face_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$20
 module top$lanes$0$ctl$face_q$3(d,q,clock);
     
     // Module arguments
@@ -4656,6 +5195,23 @@ module top$lanes$0$ctl$pad_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$18
+module top$lanes$0$ctl$pad_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$19
 module top$lanes$0$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -4673,6 +5229,23 @@ module top$lanes$0$ctl$pad_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$2
+module top$lanes$0$ctl$pad_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$20
 module top$lanes$0$ctl$pad_q$3(d,q,clock);
     
     // Module arguments
@@ -4928,6 +5501,40 @@ module top$lanes$0$ctl$sr_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$sr_q$7
+module top$lanes$0$ctl$sr_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$8
+module top$lanes$0$ctl$sr_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$9
 module top$lanes$0$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -5115,6 +5722,23 @@ module top$lanes$0$ctl$v_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$18
+module top$lanes$0$ctl$v_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$19
 module top$lanes$0$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -5132,6 +5756,23 @@ module top$lanes$0$ctl$v_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$2
+module top$lanes$0$ctl$v_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$20
 module top$lanes$0$ctl$v_q$3(d,q,clock);
     
     // Module arguments
@@ -5404,6 +6045,40 @@ module top$lanes$0$ctl$x_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$x_q$7
+module top$lanes$0$ctl$x_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$8
+module top$lanes$0$ctl$x_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$9
 module top$lanes$0$ctl$y_out_q(d,q,clock);
     
     // Module arguments
@@ -5540,6 +6215,40 @@ module top$lanes$0$ctl$y_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$y_q$6
+module top$lanes$0$ctl$y_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$7
+module top$lanes$0$ctl$y_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$8
 module top$lanes$0$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -5747,6 +6456,9 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
     output reg  [15:0] px_y;
     output reg  [2:0] px_face;
     
+    // Constant declarations
+    localparam  coord_mask = 16'h7f;
+    
     // Stub signals
     reg  feed$clock;
     reg  [63:0] feed$beats;
@@ -5834,6 +6546,7 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  ctl$dy_neg;
     reg  [15:0] ctl$dy_mag;
     reg  [63:0] ctl$dims;
+    reg  [15:0] ctl$coord_mask;
     wire  [15:0] ctl$x_t;
     wire  ctl$sr_t;
     wire  ctl$dx_neg_t;
@@ -6049,6 +6762,7 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dy_neg(ctl$dy_neg),
         .dy_mag(ctl$dy_mag),
         .dims(ctl$dims),
+        .coord_mask(ctl$coord_mask),
         .x_t(ctl$x_t),
         .sr_t(ctl$sr_t),
         .dx_neg_t(ctl$dx_neg_t),
@@ -6231,6 +6945,7 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         ctl$valid = feed$o_valid;
         ctl$er = feed$o_er;
         ctl$pad = feed$o_pad;
+        ctl$coord_mask = coord_mask;
         ctl$base_x = feed$o_base_x;
         ctl$base_y = feed$o_base_y;
         ctl$face = feed$o_face;
@@ -6455,7 +7170,7 @@ module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     end
     
 endmodule // top$lanes$1$cells
-module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -6473,6 +7188,7 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
     input wire  [63:0] dims;
+    input wire  [15:0] coord_mask;
     output reg  [15:0] x_t;
     output reg  sr_t;
     output reg  dx_neg_t;
@@ -6525,6 +7241,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] x_q$7$d;
     wire  [15:0] x_q$7$q;
     reg  x_q$7$clock;
+    reg  [15:0] x_q$8$d;
+    wire  [15:0] x_q$8$q;
+    reg  x_q$8$clock;
+    reg  [15:0] x_q$9$d;
+    wire  [15:0] x_q$9$q;
+    reg  x_q$9$clock;
     reg  [15:0] y_q$0$d;
     wire  [15:0] y_q$0$q;
     reg  y_q$0$clock;
@@ -6546,6 +7268,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] y_q$6$d;
     wire  [15:0] y_q$6$q;
     reg  y_q$6$clock;
+    reg  [15:0] y_q$7$d;
+    wire  [15:0] y_q$7$q;
+    reg  y_q$7$clock;
+    reg  [15:0] y_q$8$d;
+    wire  [15:0] y_q$8$q;
+    reg  y_q$8$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
@@ -6570,6 +7298,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  sr_q$7$d;
     wire  sr_q$7$q;
     reg  sr_q$7$clock;
+    reg  sr_q$8$d;
+    wire  sr_q$8$q;
+    reg  sr_q$8$clock;
+    reg  sr_q$9$d;
+    wire  sr_q$9$q;
+    reg  sr_q$9$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
@@ -6594,6 +7328,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dxn_q$7$d;
     wire  dxn_q$7$q;
     reg  dxn_q$7$clock;
+    reg  dxn_q$8$d;
+    wire  dxn_q$8$q;
+    reg  dxn_q$8$clock;
+    reg  dxn_q$9$d;
+    wire  dxn_q$9$q;
+    reg  dxn_q$9$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
@@ -6618,6 +7358,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] dxm_q$7$d;
     wire  [15:0] dxm_q$7$q;
     reg  dxm_q$7$clock;
+    reg  [15:0] dxm_q$8$d;
+    wire  [15:0] dxm_q$8$q;
+    reg  dxm_q$8$clock;
+    reg  [15:0] dxm_q$9$d;
+    wire  [15:0] dxm_q$9$q;
+    reg  dxm_q$9$clock;
     reg  dyn_q$0$d;
     wire  dyn_q$0$q;
     reg  dyn_q$0$clock;
@@ -6642,6 +7388,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dyn_q$7$d;
     wire  dyn_q$7$q;
     reg  dyn_q$7$clock;
+    reg  dyn_q$8$d;
+    wire  dyn_q$8$q;
+    reg  dyn_q$8$clock;
+    reg  dyn_q$9$d;
+    wire  dyn_q$9$q;
+    reg  dyn_q$9$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
@@ -6666,6 +7418,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] dym_q$7$d;
     wire  [15:0] dym_q$7$q;
     reg  dym_q$7$clock;
+    reg  [15:0] dym_q$8$d;
+    wire  [15:0] dym_q$8$q;
+    reg  dym_q$8$clock;
+    reg  [15:0] dym_q$9$d;
+    wire  [15:0] dym_q$9$q;
+    reg  dym_q$9$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -6723,6 +7481,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$18$d;
     wire  v_q$18$q;
     reg  v_q$18$clock;
+    reg  v_q$19$d;
+    wire  v_q$19$q;
+    reg  v_q$19$clock;
+    reg  v_q$20$d;
+    wire  v_q$20$q;
+    reg  v_q$20$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -6780,6 +7544,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$18$d;
     wire  er_q$18$q;
     reg  er_q$18$clock;
+    reg  er_q$19$d;
+    wire  er_q$19$q;
+    reg  er_q$19$clock;
+    reg  er_q$20$d;
+    wire  er_q$20$q;
+    reg  er_q$20$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -6837,6 +7607,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$18$d;
     wire  pad_q$18$q;
     reg  pad_q$18$clock;
+    reg  pad_q$19$d;
+    wire  pad_q$19$q;
+    reg  pad_q$19$clock;
+    reg  pad_q$20$d;
+    wire  pad_q$20$q;
+    reg  pad_q$20$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -6894,6 +7670,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$18$d;
     wire  [15:0] bx_q$18$q;
     reg  bx_q$18$clock;
+    reg  [15:0] bx_q$19$d;
+    wire  [15:0] bx_q$19$q;
+    reg  bx_q$19$clock;
+    reg  [15:0] bx_q$20$d;
+    wire  [15:0] bx_q$20$q;
+    reg  bx_q$20$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -6951,6 +7733,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$18$d;
     wire  [15:0] by_q$18$q;
     reg  by_q$18$clock;
+    reg  [15:0] by_q$19$d;
+    wire  [15:0] by_q$19$q;
+    reg  by_q$19$clock;
+    reg  [15:0] by_q$20$d;
+    wire  [15:0] by_q$20$q;
+    reg  by_q$20$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -7008,6 +7796,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$18$d;
     wire  [2:0] face_q$18$q;
     reg  face_q$18$clock;
+    reg  [2:0] face_q$19$d;
+    wire  [2:0] face_q$19$q;
+    reg  face_q$19$clock;
+    reg  [2:0] face_q$20$d;
+    wire  [2:0] face_q$20$q;
+    reg  face_q$20$clock;
     
     // Sub module instances
     top$lanes$1$ctl$nx_last nx_last(
@@ -7070,6 +7864,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(x_q$7$q),
         .clock(x_q$7$clock)
     );
+    top$lanes$1$ctl$x_q$8 x_q$8(
+        .d(x_q$8$d),
+        .q(x_q$8$q),
+        .clock(x_q$8$clock)
+    );
+    top$lanes$1$ctl$x_q$9 x_q$9(
+        .d(x_q$9$d),
+        .q(x_q$9$q),
+        .clock(x_q$9$clock)
+    );
     top$lanes$1$ctl$y_q$0 y_q$0(
         .d(y_q$0$d),
         .q(y_q$0$q),
@@ -7104,6 +7908,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$6$d),
         .q(y_q$6$q),
         .clock(y_q$6$clock)
+    );
+    top$lanes$1$ctl$y_q$7 y_q$7(
+        .d(y_q$7$d),
+        .q(y_q$7$q),
+        .clock(y_q$7$clock)
+    );
+    top$lanes$1$ctl$y_q$8 y_q$8(
+        .d(y_q$8$d),
+        .q(y_q$8$q),
+        .clock(y_q$8$clock)
     );
     top$lanes$1$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -7145,6 +7959,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$7$q),
         .clock(sr_q$7$clock)
     );
+    top$lanes$1$ctl$sr_q$8 sr_q$8(
+        .d(sr_q$8$d),
+        .q(sr_q$8$q),
+        .clock(sr_q$8$clock)
+    );
+    top$lanes$1$ctl$sr_q$9 sr_q$9(
+        .d(sr_q$9$d),
+        .q(sr_q$9$q),
+        .clock(sr_q$9$clock)
+    );
     top$lanes$1$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -7184,6 +8008,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$7$d),
         .q(dxn_q$7$q),
         .clock(dxn_q$7$clock)
+    );
+    top$lanes$1$ctl$dxn_q$8 dxn_q$8(
+        .d(dxn_q$8$d),
+        .q(dxn_q$8$q),
+        .clock(dxn_q$8$clock)
+    );
+    top$lanes$1$ctl$dxn_q$9 dxn_q$9(
+        .d(dxn_q$9$d),
+        .q(dxn_q$9$q),
+        .clock(dxn_q$9$clock)
     );
     top$lanes$1$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -7225,6 +8059,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dxm_q$7$q),
         .clock(dxm_q$7$clock)
     );
+    top$lanes$1$ctl$dxm_q$8 dxm_q$8(
+        .d(dxm_q$8$d),
+        .q(dxm_q$8$q),
+        .clock(dxm_q$8$clock)
+    );
+    top$lanes$1$ctl$dxm_q$9 dxm_q$9(
+        .d(dxm_q$9$d),
+        .q(dxm_q$9$q),
+        .clock(dxm_q$9$clock)
+    );
     top$lanes$1$ctl$dyn_q$0 dyn_q$0(
         .d(dyn_q$0$d),
         .q(dyn_q$0$q),
@@ -7265,6 +8109,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dyn_q$7$q),
         .clock(dyn_q$7$clock)
     );
+    top$lanes$1$ctl$dyn_q$8 dyn_q$8(
+        .d(dyn_q$8$d),
+        .q(dyn_q$8$q),
+        .clock(dyn_q$8$clock)
+    );
+    top$lanes$1$ctl$dyn_q$9 dyn_q$9(
+        .d(dyn_q$9$d),
+        .q(dyn_q$9$q),
+        .clock(dyn_q$9$clock)
+    );
     top$lanes$1$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
         .q(dym_q$0$q),
@@ -7304,6 +8158,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dym_q$7$d),
         .q(dym_q$7$q),
         .clock(dym_q$7$clock)
+    );
+    top$lanes$1$ctl$dym_q$8 dym_q$8(
+        .d(dym_q$8$d),
+        .q(dym_q$8$q),
+        .clock(dym_q$8$clock)
+    );
+    top$lanes$1$ctl$dym_q$9 dym_q$9(
+        .d(dym_q$9$d),
+        .q(dym_q$9$q),
+        .clock(dym_q$9$clock)
     );
     top$lanes$1$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -7400,6 +8264,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$18$q),
         .clock(v_q$18$clock)
     );
+    top$lanes$1$ctl$v_q$19 v_q$19(
+        .d(v_q$19$d),
+        .q(v_q$19$q),
+        .clock(v_q$19$clock)
+    );
+    top$lanes$1$ctl$v_q$20 v_q$20(
+        .d(v_q$20$d),
+        .q(v_q$20$q),
+        .clock(v_q$20$clock)
+    );
     top$lanes$1$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -7494,6 +8368,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$18$d),
         .q(er_q$18$q),
         .clock(er_q$18$clock)
+    );
+    top$lanes$1$ctl$er_q$19 er_q$19(
+        .d(er_q$19$d),
+        .q(er_q$19$q),
+        .clock(er_q$19$clock)
+    );
+    top$lanes$1$ctl$er_q$20 er_q$20(
+        .d(er_q$20$d),
+        .q(er_q$20$q),
+        .clock(er_q$20$clock)
     );
     top$lanes$1$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -7590,6 +8474,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$18$q),
         .clock(pad_q$18$clock)
     );
+    top$lanes$1$ctl$pad_q$19 pad_q$19(
+        .d(pad_q$19$d),
+        .q(pad_q$19$q),
+        .clock(pad_q$19$clock)
+    );
+    top$lanes$1$ctl$pad_q$20 pad_q$20(
+        .d(pad_q$20$d),
+        .q(pad_q$20$q),
+        .clock(pad_q$20$clock)
+    );
     top$lanes$1$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -7684,6 +8578,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$18$d),
         .q(bx_q$18$q),
         .clock(bx_q$18$clock)
+    );
+    top$lanes$1$ctl$bx_q$19 bx_q$19(
+        .d(bx_q$19$d),
+        .q(bx_q$19$q),
+        .clock(bx_q$19$clock)
+    );
+    top$lanes$1$ctl$bx_q$20 bx_q$20(
+        .d(bx_q$20$d),
+        .q(bx_q$20$q),
+        .clock(bx_q$20$clock)
     );
     top$lanes$1$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -7780,6 +8684,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$18$q),
         .clock(by_q$18$clock)
     );
+    top$lanes$1$ctl$by_q$19 by_q$19(
+        .d(by_q$19$d),
+        .q(by_q$19$q),
+        .clock(by_q$19$clock)
+    );
+    top$lanes$1$ctl$by_q$20 by_q$20(
+        .d(by_q$20$d),
+        .q(by_q$20$q),
+        .clock(by_q$20$clock)
+    );
     top$lanes$1$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -7875,6 +8789,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$18$q),
         .clock(face_q$18$clock)
     );
+    top$lanes$1$ctl$face_q$19 face_q$19(
+        .d(face_q$19$d),
+        .q(face_q$19$q),
+        .clock(face_q$19$clock)
+    );
+    top$lanes$1$ctl$face_q$20 face_q$20(
+        .d(face_q$20$d),
+        .q(face_q$20$q),
+        .clock(face_q$20$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -7934,6 +8858,18 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$7$clock = clock;
         dyn_q$7$clock = clock;
         dym_q$7$clock = clock;
+        x_q$8$clock = clock;
+        sr_q$8$clock = clock;
+        dxn_q$8$clock = clock;
+        dxm_q$8$clock = clock;
+        dyn_q$8$clock = clock;
+        dym_q$8$clock = clock;
+        x_q$9$clock = clock;
+        sr_q$9$clock = clock;
+        dxn_q$9$clock = clock;
+        dxm_q$9$clock = clock;
+        dyn_q$9$clock = clock;
+        dym_q$9$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -8048,8 +8984,20 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$18$clock = clock;
         by_q$18$clock = clock;
         face_q$18$clock = clock;
-        x_q$0$d = x;
-        y_q$0$d = y;
+        v_q$19$clock = clock;
+        er_q$19$clock = clock;
+        pad_q$19$clock = clock;
+        bx_q$19$clock = clock;
+        by_q$19$clock = clock;
+        face_q$19$clock = clock;
+        v_q$20$clock = clock;
+        er_q$20$clock = clock;
+        pad_q$20$clock = clock;
+        bx_q$20$clock = clock;
+        by_q$20$clock = clock;
+        face_q$20$clock = clock;
+        x_q$0$d = x & coord_mask;
+        y_q$0$d = y & coord_mask;
         sr_q$0$d = sr;
         dxn_q$0$d = dx_neg;
         dxm_q$0$d = dx_mag;
@@ -8097,6 +9045,18 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$7$d = dxm_q$6$q;
         dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
+        x_q$8$d = x_q$7$q;
+        sr_q$8$d = sr_q$7$q;
+        dxn_q$8$d = dxn_q$7$q;
+        dxm_q$8$d = dxm_q$7$q;
+        dyn_q$8$d = dyn_q$7$q;
+        dym_q$8$d = dym_q$7$q;
+        x_q$9$d = x_q$8$q;
+        sr_q$9$d = sr_q$8$q;
+        dxn_q$9$d = dxn_q$8$q;
+        dxm_q$9$d = dxm_q$8$q;
+        dyn_q$9$d = dyn_q$8$q;
+        dym_q$9$d = dym_q$8$q;
         y_q$0$clock = clock;
         y_q$1$clock = clock;
         y_q$2$clock = clock;
@@ -8104,36 +9064,40 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         y_q$4$clock = clock;
         y_q$5$clock = clock;
         y_q$6$clock = clock;
+        y_q$7$clock = clock;
+        y_q$8$clock = clock;
         y_q$1$d = y_q$0$q;
         y_q$2$d = y_q$1$q;
         y_q$3$d = y_q$2$q;
         y_q$4$d = y_q$3$q;
         y_q$5$d = y_q$4$q;
         y_q$6$d = y_q$5$q;
-        x_t = x_q$7$q;
-        sr_t = sr_q$7$q;
-        dx_neg_t = dxn_q$7$q;
-        dx_mag_t = dxm_q$7$q;
-        dy_neg_t = dyn_q$7$q;
-        dy_mag_t = dym_q$7$q;
+        y_q$7$d = y_q$6$q;
+        y_q$8$d = y_q$7$q;
+        x_t = x_q$9$q;
+        sr_t = sr_q$9$q;
+        dx_neg_t = dxn_q$9$q;
+        dx_mag_t = dxm_q$9$q;
+        dy_neg_t = dyn_q$9$q;
+        dy_mag_t = dym_q$9$q;
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         x_out_q$d = 1'b0;
-        if (dxm_q$6$q != 'h0) begin
-            if (dxn_q$6$q) begin
-                x_out_q$d = x_q$6$q == nx_last$q;
+        if (dxm_q$8$q != 'h0) begin
+            if (dxn_q$8$q) begin
+                x_out_q$d = x_q$8$q == nx_last$q;
             end
             else begin
-                x_out_q$d = x_q$6$q == 'h0;
+                x_out_q$d = x_q$8$q == 'h0;
             end
         end
         y_out_q$d = 1'b0;
-        if (dym_q$6$q != 'h0) begin
-            if (dyn_q$6$q) begin
-                y_out_q$d = y_q$6$q == ny_last$q;
+        if (dym_q$8$q != 'h0) begin
+            if (dyn_q$8$q) begin
+                y_out_q$d = y_q$8$q == ny_last$q;
             end
             else begin
-                y_out_q$d = y_q$6$q == 'h0;
+                y_out_q$d = y_q$8$q == 'h0;
             end
         end
         x_out_t = x_out_q$q;
@@ -8141,8 +9105,8 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
-        bx_q$0$d = base_x;
-        by_q$0$d = base_y;
+        bx_q$0$d = base_x & coord_mask;
+        by_q$0$d = base_y & coord_mask;
         face_q$0$d = face;
         v_q$1$d = v_q$0$q;
         er_q$1$d = er_q$0$q;
@@ -8252,12 +9216,24 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$18$d = bx_q$17$q;
         by_q$18$d = by_q$17$q;
         face_q$18$d = face_q$17$q;
-        res_beat = v_q$18$q;
-        res_valid = v_q$18$q & ~pad_q$18$q;
-        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
-        px_x = bx_q$18$q;
-        px_y = by_q$18$q;
-        px_face = face_q$18$q;
+        v_q$19$d = v_q$18$q;
+        er_q$19$d = er_q$18$q;
+        pad_q$19$d = pad_q$18$q;
+        bx_q$19$d = bx_q$18$q;
+        by_q$19$d = by_q$18$q;
+        face_q$19$d = face_q$18$q;
+        v_q$20$d = v_q$19$q;
+        er_q$20$d = er_q$19$q;
+        pad_q$20$d = pad_q$19$q;
+        bx_q$20$d = bx_q$19$q;
+        by_q$20$d = by_q$19$q;
+        face_q$20$d = face_q$19$q;
+        res_beat = v_q$20$q;
+        res_valid = v_q$20$q & ~pad_q$20$q;
+        px_valid = v_q$20$q & er_q$20$q & ~pad_q$20$q;
+        px_x = bx_q$20$q;
+        px_y = by_q$20$q;
+        px_face = face_q$20$q;
     end
     
 endmodule // top$lanes$1$ctl
@@ -8448,6 +9424,23 @@ module top$lanes$1$ctl$bx_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$bx_q$18
+module top$lanes$1$ctl$bx_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$19
 module top$lanes$1$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -8465,6 +9458,23 @@ module top$lanes$1$ctl$bx_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$bx_q$2
+module top$lanes$1$ctl$bx_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$20
 module top$lanes$1$ctl$bx_q$3(d,q,clock);
     
     // Module arguments
@@ -8771,6 +9781,23 @@ module top$lanes$1$ctl$by_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$by_q$18
+module top$lanes$1$ctl$by_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$19
 module top$lanes$1$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -8788,6 +9815,23 @@ module top$lanes$1$ctl$by_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$by_q$2
+module top$lanes$1$ctl$by_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$20
 module top$lanes$1$ctl$by_q$3(d,q,clock);
     
     // Module arguments
@@ -9043,6 +10087,40 @@ module top$lanes$1$ctl$dxm_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dxm_q$7
+module top$lanes$1$ctl$dxm_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$8
+module top$lanes$1$ctl$dxm_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$9
 module top$lanes$1$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
@@ -9179,6 +10257,40 @@ module top$lanes$1$ctl$dxn_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dxn_q$7
+module top$lanes$1$ctl$dxn_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$8
+module top$lanes$1$ctl$dxn_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$9
 module top$lanes$1$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -9315,6 +10427,40 @@ module top$lanes$1$ctl$dym_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dym_q$7
+module top$lanes$1$ctl$dym_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$8
+module top$lanes$1$ctl$dym_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$9
 module top$lanes$1$ctl$dyn_q$0(d,q,clock);
     
     // Module arguments
@@ -9451,6 +10597,40 @@ module top$lanes$1$ctl$dyn_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dyn_q$7
+module top$lanes$1$ctl$dyn_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$8
+module top$lanes$1$ctl$dyn_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$9
 module top$lanes$1$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -9638,6 +10818,23 @@ module top$lanes$1$ctl$er_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$er_q$18
+module top$lanes$1$ctl$er_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$19
 module top$lanes$1$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -9655,6 +10852,23 @@ module top$lanes$1$ctl$er_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$er_q$2
+module top$lanes$1$ctl$er_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$20
 module top$lanes$1$ctl$er_q$3(d,q,clock);
     
     // Module arguments
@@ -9961,6 +11175,23 @@ module top$lanes$1$ctl$face_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$18
+module top$lanes$1$ctl$face_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$19
 module top$lanes$1$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -9978,6 +11209,23 @@ module top$lanes$1$ctl$face_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$2
+module top$lanes$1$ctl$face_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$20
 module top$lanes$1$ctl$face_q$3(d,q,clock);
     
     // Module arguments
@@ -10318,6 +11566,23 @@ module top$lanes$1$ctl$pad_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$18
+module top$lanes$1$ctl$pad_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$19
 module top$lanes$1$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -10335,6 +11600,23 @@ module top$lanes$1$ctl$pad_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$2
+module top$lanes$1$ctl$pad_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$20
 module top$lanes$1$ctl$pad_q$3(d,q,clock);
     
     // Module arguments
@@ -10590,6 +11872,40 @@ module top$lanes$1$ctl$sr_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$sr_q$7
+module top$lanes$1$ctl$sr_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$8
+module top$lanes$1$ctl$sr_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$9
 module top$lanes$1$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -10777,6 +12093,23 @@ module top$lanes$1$ctl$v_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$18
+module top$lanes$1$ctl$v_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$19
 module top$lanes$1$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -10794,6 +12127,23 @@ module top$lanes$1$ctl$v_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$2
+module top$lanes$1$ctl$v_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$20
 module top$lanes$1$ctl$v_q$3(d,q,clock);
     
     // Module arguments
@@ -11066,6 +12416,40 @@ module top$lanes$1$ctl$x_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$x_q$7
+module top$lanes$1$ctl$x_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$8
+module top$lanes$1$ctl$x_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$9
 module top$lanes$1$ctl$y_out_q(d,q,clock);
     
     // Module arguments
@@ -11202,6 +12586,40 @@ module top$lanes$1$ctl$y_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$y_q$6
+module top$lanes$1$ctl$y_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$7
+module top$lanes$1$ctl$y_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$8
 module top$lanes$1$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments

@@ -175,6 +175,12 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] alpha_q$8$d;
     wire  [15:0] alpha_q$8$q;
     reg  alpha_q$8$clock;
+    reg  [15:0] alpha_q$9$d;
+    wire  [15:0] alpha_q$9$q;
+    reg  alpha_q$9$clock;
+    reg  [15:0] alpha_q$10$d;
+    wire  [15:0] alpha_q$10$q;
+    reg  alpha_q$10$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -217,6 +223,12 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$13$d;
     wire  [15:0] value_q$13$q;
     reg  value_q$13$clock;
+    reg  [15:0] value_q$14$d;
+    wire  [15:0] value_q$14$q;
+    reg  value_q$14$clock;
+    reg  [15:0] value_q$15$d;
+    wire  [15:0] value_q$15$q;
+    reg  value_q$15$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -262,9 +274,18 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$14$d;
     wire  valid_q$14$q;
     reg  valid_q$14$clock;
+    reg  valid_q$15$d;
+    wire  valid_q$15$q;
+    reg  valid_q$15$clock;
+    reg  valid_q$16$d;
+    wire  valid_q$16$q;
+    reg  valid_q$16$clock;
     reg  [15:0] specular_q$d;
     wire  [15:0] specular_q$q;
     reg  specular_q$clock;
+    reg  [15:0] specular_qq$d;
+    wire  [15:0] specular_qq$q;
+    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
@@ -498,6 +519,16 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(alpha_q$8$q),
         .clock(alpha_q$8$clock)
     );
+    top$lanes$0$shader$alpha_q$9 alpha_q$9(
+        .d(alpha_q$9$d),
+        .q(alpha_q$9$q),
+        .clock(alpha_q$9$clock)
+    );
+    top$lanes$0$shader$alpha_q$10 alpha_q$10(
+        .d(alpha_q$10$d),
+        .q(alpha_q$10$q),
+        .clock(alpha_q$10$clock)
+    );
     top$lanes$0$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
         .q(value_q$0$q),
@@ -567,6 +598,16 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$13$d),
         .q(value_q$13$q),
         .clock(value_q$13$clock)
+    );
+    top$lanes$0$shader$value_q$14 value_q$14(
+        .d(value_q$14$d),
+        .q(value_q$14$q),
+        .clock(value_q$14$clock)
+    );
+    top$lanes$0$shader$value_q$15 value_q$15(
+        .d(value_q$15$d),
+        .q(value_q$15$q),
+        .clock(value_q$15$clock)
     );
     top$lanes$0$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -643,10 +684,25 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$14$q),
         .clock(valid_q$14$clock)
     );
+    top$lanes$0$shader$valid_q$15 valid_q$15(
+        .d(valid_q$15$d),
+        .q(valid_q$15$q),
+        .clock(valid_q$15$clock)
+    );
+    top$lanes$0$shader$valid_q$16 valid_q$16(
+        .d(valid_q$16$d),
+        .q(valid_q$16$q),
+        .clock(valid_q$16$clock)
+    );
     top$lanes$0$shader$specular_q specular_q(
         .d(specular_q$d),
         .q(specular_q$q),
         .clock(specular_q$clock)
+    );
+    top$lanes$0$shader$specular_qq specular_qq(
+        .d(specular_qq$d),
+        .q(specular_qq$q),
+        .clock(specular_qq$clock)
     );
     top$lanes$0$shader$lit_r lit_r(
         .clock(lit_r$clock),
@@ -728,11 +784,13 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_pass;
     always @(*) begin
         specular_q$clock = clock;
+        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
         specular_q$d = specular_q$q;
+        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -808,23 +866,25 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         row_q$2$d = row_q$1$q;
         row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        alpha_q$3$clock = clock;
         lut_q$4$clock = clock;
-        alpha_q$4$clock = clock;
         lut_q$5$clock = clock;
-        alpha_q$5$clock = clock;
         lut_q$6$clock = clock;
-        alpha_q$6$clock = clock;
         lut_q$7$clock = clock;
-        alpha_q$7$clock = clock;
         lut_q$8$clock = clock;
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$2$clock = clock;
+        alpha_q$3$clock = clock;
+        alpha_q$4$clock = clock;
+        alpha_q$5$clock = clock;
+        alpha_q$6$clock = clock;
+        alpha_q$7$clock = clock;
         alpha_q$8$clock = clock;
+        alpha_q$9$clock = clock;
+        alpha_q$10$clock = clock;
         lut_q$0$d = lut$data;
         lut_q$1$d = lut_q$0$q;
         lut_q$2$d = lut_q$1$q;
@@ -858,6 +918,8 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$11$clock = clock;
         value_q$12$clock = clock;
         value_q$13$clock = clock;
+        value_q$14$clock = clock;
+        value_q$15$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -873,6 +935,8 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$12$clock = clock;
         valid_q$13$clock = clock;
         valid_q$14$clock = clock;
+        valid_q$15$clock = clock;
+        valid_q$16$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -888,6 +952,8 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$11$d = value_q$10$q;
         value_q$12$d = value_q$11$q;
         value_q$13$d = value_q$12$q;
+        value_q$14$d = value_q$13$q;
+        value_q$15$d = value_q$14$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
@@ -902,6 +968,8 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$12$d = valid_q$11$q;
         valid_q$13$d = valid_q$12$q;
         valid_q$14$d = valid_q$13$q;
+        valid_q$15$d = valid_q$14$q;
+        valid_q$16$d = valid_q$15$q;
         alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
@@ -919,6 +987,8 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         alpha_q$6$d = alpha_q$5$q;
         alpha_q$7$d = alpha_q$6$q;
         alpha_q$8$d = alpha_q$7$q;
+        alpha_q$9$d = alpha_q$8$q;
+        alpha_q$10$d = alpha_q$9$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
@@ -926,15 +996,16 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             specular = lighting$specular;
         end
         specular_q$d = specular;
+        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
+        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -953,17 +1024,17 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$7$q;
-        mul_g$b = alpha_q$7$q;
-        mul_b$b = alpha_q$7$q;
+        mul_r$b = alpha_q$8$q;
+        mul_g$b = alpha_q$8$q;
+        mul_b$b = alpha_q$8$q;
         if (scalar) begin
-            r_q$d = value_q$13$q;
+            r_q$d = value_q$15$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$8$q;
+            r_q$d = alpha_q$10$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -972,7 +1043,7 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$8$q;
+            a_q$d = alpha_q$10$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -984,7 +1055,7 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$14$q;
+            valid_pass = valid_q$16$q;
         end
         r = r_pass;
         g = g_pass;
@@ -1045,6 +1116,23 @@ module top$lanes$0$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$alpha_q$1
+module top$lanes$0$shader$alpha_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$10
 module top$lanes$0$shader$alpha_q$2(d,q,clock);
     
     // Module arguments
@@ -1164,6 +1252,23 @@ module top$lanes$0$shader$alpha_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$alpha_q$8
+module top$lanes$0$shader$alpha_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$9
 module top$lanes$0$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -1297,11 +1402,19 @@ module top$lanes$0$shader$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$0$shader$lit_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$0$shader$lit_b$t t(
         .d(t$d),
         .q(t$q),
@@ -1311,9 +1424,12 @@ module top$lanes$0$shader$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -1322,6 +1438,23 @@ module top$lanes$0$shader$lit_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_b
+module top$lanes$0$shader$lit_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_b$p
 module top$lanes$0$shader$lit_b$t(d,q,clock);
     
     // Module arguments
@@ -1353,11 +1486,19 @@ module top$lanes$0$shader$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$0$shader$lit_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$0$shader$lit_g$t t(
         .d(t$d),
         .q(t$q),
@@ -1367,9 +1508,12 @@ module top$lanes$0$shader$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -1378,6 +1522,23 @@ module top$lanes$0$shader$lit_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_g
+module top$lanes$0$shader$lit_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_g$p
 module top$lanes$0$shader$lit_g$t(d,q,clock);
     
     // Module arguments
@@ -1409,11 +1570,19 @@ module top$lanes$0$shader$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$0$shader$lit_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$0$shader$lit_r$t t(
         .d(t$d),
         .q(t$q),
@@ -1423,9 +1592,12 @@ module top$lanes$0$shader$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -1434,6 +1606,23 @@ module top$lanes$0$shader$lit_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_r
+module top$lanes$0$shader$lit_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_r$p
 module top$lanes$0$shader$lit_r$t(d,q,clock);
     
     // Module arguments
@@ -1739,11 +1928,19 @@ module top$lanes$0$shader$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$0$shader$mul_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$0$shader$mul_b$t t(
         .d(t$d),
         .q(t$q),
@@ -1753,9 +1950,12 @@ module top$lanes$0$shader$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -1764,6 +1964,23 @@ module top$lanes$0$shader$mul_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_b
+module top$lanes$0$shader$mul_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mul_b$p
 module top$lanes$0$shader$mul_b$t(d,q,clock);
     
     // Module arguments
@@ -1795,11 +2012,19 @@ module top$lanes$0$shader$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$0$shader$mul_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$0$shader$mul_g$t t(
         .d(t$d),
         .q(t$q),
@@ -1809,9 +2034,12 @@ module top$lanes$0$shader$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -1820,6 +2048,23 @@ module top$lanes$0$shader$mul_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_g
+module top$lanes$0$shader$mul_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mul_g$p
 module top$lanes$0$shader$mul_g$t(d,q,clock);
     
     // Module arguments
@@ -1851,11 +2096,19 @@ module top$lanes$0$shader$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$0$shader$mul_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$0$shader$mul_r$t t(
         .d(t$d),
         .q(t$q),
@@ -1865,9 +2118,12 @@ module top$lanes$0$shader$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -1876,6 +2132,23 @@ module top$lanes$0$shader$mul_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_r
+module top$lanes$0$shader$mul_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$mul_r$p
 module top$lanes$0$shader$mul_r$t(d,q,clock);
     
     // Module arguments
@@ -2097,6 +2370,23 @@ module top$lanes$0$shader$specular_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$specular_q
+module top$lanes$0$shader$specular_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$specular_qq
 module top$lanes$0$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -2216,6 +2506,40 @@ module top$lanes$0$shader$valid_q$14(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$valid_q$14
+module top$lanes$0$shader$valid_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$15
+module top$lanes$0$shader$valid_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$16
 module top$lanes$0$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -2454,6 +2778,40 @@ module top$lanes$0$shader$value_q$13(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$value_q$13
+module top$lanes$0$shader$value_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$14
+module top$lanes$0$shader$value_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$15
 module top$lanes$0$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -2767,6 +3125,12 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] alpha_q$8$d;
     wire  [15:0] alpha_q$8$q;
     reg  alpha_q$8$clock;
+    reg  [15:0] alpha_q$9$d;
+    wire  [15:0] alpha_q$9$q;
+    reg  alpha_q$9$clock;
+    reg  [15:0] alpha_q$10$d;
+    wire  [15:0] alpha_q$10$q;
+    reg  alpha_q$10$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -2809,6 +3173,12 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$13$d;
     wire  [15:0] value_q$13$q;
     reg  value_q$13$clock;
+    reg  [15:0] value_q$14$d;
+    wire  [15:0] value_q$14$q;
+    reg  value_q$14$clock;
+    reg  [15:0] value_q$15$d;
+    wire  [15:0] value_q$15$q;
+    reg  value_q$15$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -2854,9 +3224,18 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$14$d;
     wire  valid_q$14$q;
     reg  valid_q$14$clock;
+    reg  valid_q$15$d;
+    wire  valid_q$15$q;
+    reg  valid_q$15$clock;
+    reg  valid_q$16$d;
+    wire  valid_q$16$q;
+    reg  valid_q$16$clock;
     reg  [15:0] specular_q$d;
     wire  [15:0] specular_q$q;
     reg  specular_q$clock;
+    reg  [15:0] specular_qq$d;
+    wire  [15:0] specular_qq$q;
+    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
@@ -3090,6 +3469,16 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(alpha_q$8$q),
         .clock(alpha_q$8$clock)
     );
+    top$lanes$1$shader$alpha_q$9 alpha_q$9(
+        .d(alpha_q$9$d),
+        .q(alpha_q$9$q),
+        .clock(alpha_q$9$clock)
+    );
+    top$lanes$1$shader$alpha_q$10 alpha_q$10(
+        .d(alpha_q$10$d),
+        .q(alpha_q$10$q),
+        .clock(alpha_q$10$clock)
+    );
     top$lanes$1$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
         .q(value_q$0$q),
@@ -3159,6 +3548,16 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$13$d),
         .q(value_q$13$q),
         .clock(value_q$13$clock)
+    );
+    top$lanes$1$shader$value_q$14 value_q$14(
+        .d(value_q$14$d),
+        .q(value_q$14$q),
+        .clock(value_q$14$clock)
+    );
+    top$lanes$1$shader$value_q$15 value_q$15(
+        .d(value_q$15$d),
+        .q(value_q$15$q),
+        .clock(value_q$15$clock)
     );
     top$lanes$1$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -3235,10 +3634,25 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$14$q),
         .clock(valid_q$14$clock)
     );
+    top$lanes$1$shader$valid_q$15 valid_q$15(
+        .d(valid_q$15$d),
+        .q(valid_q$15$q),
+        .clock(valid_q$15$clock)
+    );
+    top$lanes$1$shader$valid_q$16 valid_q$16(
+        .d(valid_q$16$d),
+        .q(valid_q$16$q),
+        .clock(valid_q$16$clock)
+    );
     top$lanes$1$shader$specular_q specular_q(
         .d(specular_q$d),
         .q(specular_q$q),
         .clock(specular_q$clock)
+    );
+    top$lanes$1$shader$specular_qq specular_qq(
+        .d(specular_qq$d),
+        .q(specular_qq$q),
+        .clock(specular_qq$clock)
     );
     top$lanes$1$shader$lit_r lit_r(
         .clock(lit_r$clock),
@@ -3320,11 +3734,13 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_pass;
     always @(*) begin
         specular_q$clock = clock;
+        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
         specular_q$d = specular_q$q;
+        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -3400,23 +3816,25 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         row_q$2$d = row_q$1$q;
         row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        alpha_q$3$clock = clock;
         lut_q$4$clock = clock;
-        alpha_q$4$clock = clock;
         lut_q$5$clock = clock;
-        alpha_q$5$clock = clock;
         lut_q$6$clock = clock;
-        alpha_q$6$clock = clock;
         lut_q$7$clock = clock;
-        alpha_q$7$clock = clock;
         lut_q$8$clock = clock;
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$2$clock = clock;
+        alpha_q$3$clock = clock;
+        alpha_q$4$clock = clock;
+        alpha_q$5$clock = clock;
+        alpha_q$6$clock = clock;
+        alpha_q$7$clock = clock;
         alpha_q$8$clock = clock;
+        alpha_q$9$clock = clock;
+        alpha_q$10$clock = clock;
         lut_q$0$d = lut$data;
         lut_q$1$d = lut_q$0$q;
         lut_q$2$d = lut_q$1$q;
@@ -3450,6 +3868,8 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$11$clock = clock;
         value_q$12$clock = clock;
         value_q$13$clock = clock;
+        value_q$14$clock = clock;
+        value_q$15$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -3465,6 +3885,8 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$12$clock = clock;
         valid_q$13$clock = clock;
         valid_q$14$clock = clock;
+        valid_q$15$clock = clock;
+        valid_q$16$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -3480,6 +3902,8 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$11$d = value_q$10$q;
         value_q$12$d = value_q$11$q;
         value_q$13$d = value_q$12$q;
+        value_q$14$d = value_q$13$q;
+        value_q$15$d = value_q$14$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
@@ -3494,6 +3918,8 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$12$d = valid_q$11$q;
         valid_q$13$d = valid_q$12$q;
         valid_q$14$d = valid_q$13$q;
+        valid_q$15$d = valid_q$14$q;
+        valid_q$16$d = valid_q$15$q;
         alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
@@ -3511,6 +3937,8 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         alpha_q$6$d = alpha_q$5$q;
         alpha_q$7$d = alpha_q$6$q;
         alpha_q$8$d = alpha_q$7$q;
+        alpha_q$9$d = alpha_q$8$q;
+        alpha_q$10$d = alpha_q$9$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
@@ -3518,15 +3946,16 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             specular = lighting$specular;
         end
         specular_q$d = specular;
+        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
+        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -3545,17 +3974,17 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$7$q;
-        mul_g$b = alpha_q$7$q;
-        mul_b$b = alpha_q$7$q;
+        mul_r$b = alpha_q$8$q;
+        mul_g$b = alpha_q$8$q;
+        mul_b$b = alpha_q$8$q;
         if (scalar) begin
-            r_q$d = value_q$13$q;
+            r_q$d = value_q$15$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$8$q;
+            r_q$d = alpha_q$10$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -3564,7 +3993,7 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$8$q;
+            a_q$d = alpha_q$10$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -3576,7 +4005,7 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$14$q;
+            valid_pass = valid_q$16$q;
         end
         r = r_pass;
         g = g_pass;
@@ -3637,6 +4066,23 @@ module top$lanes$1$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$alpha_q$1
+module top$lanes$1$shader$alpha_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$10
 module top$lanes$1$shader$alpha_q$2(d,q,clock);
     
     // Module arguments
@@ -3756,6 +4202,23 @@ module top$lanes$1$shader$alpha_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$alpha_q$8
+module top$lanes$1$shader$alpha_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$9
 module top$lanes$1$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -3889,11 +4352,19 @@ module top$lanes$1$shader$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$1$shader$lit_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$1$shader$lit_b$t t(
         .d(t$d),
         .q(t$q),
@@ -3903,9 +4374,12 @@ module top$lanes$1$shader$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -3914,6 +4388,23 @@ module top$lanes$1$shader$lit_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_b
+module top$lanes$1$shader$lit_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_b$p
 module top$lanes$1$shader$lit_b$t(d,q,clock);
     
     // Module arguments
@@ -3945,11 +4436,19 @@ module top$lanes$1$shader$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$1$shader$lit_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$1$shader$lit_g$t t(
         .d(t$d),
         .q(t$q),
@@ -3959,9 +4458,12 @@ module top$lanes$1$shader$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -3970,6 +4472,23 @@ module top$lanes$1$shader$lit_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_g
+module top$lanes$1$shader$lit_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_g$p
 module top$lanes$1$shader$lit_g$t(d,q,clock);
     
     // Module arguments
@@ -4001,11 +4520,19 @@ module top$lanes$1$shader$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$1$shader$lit_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$1$shader$lit_r$t t(
         .d(t$d),
         .q(t$q),
@@ -4015,9 +4542,12 @@ module top$lanes$1$shader$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4026,6 +4556,23 @@ module top$lanes$1$shader$lit_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_r
+module top$lanes$1$shader$lit_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_r$p
 module top$lanes$1$shader$lit_r$t(d,q,clock);
     
     // Module arguments
@@ -4331,11 +4878,19 @@ module top$lanes$1$shader$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$1$shader$mul_b$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$1$shader$mul_b$t t(
         .d(t$d),
         .q(t$q),
@@ -4345,9 +4900,12 @@ module top$lanes$1$shader$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4356,6 +4914,23 @@ module top$lanes$1$shader$mul_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_b
+module top$lanes$1$shader$mul_b$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mul_b$p
 module top$lanes$1$shader$mul_b$t(d,q,clock);
     
     // Module arguments
@@ -4387,11 +4962,19 @@ module top$lanes$1$shader$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$1$shader$mul_g$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$1$shader$mul_g$t t(
         .d(t$d),
         .q(t$q),
@@ -4401,9 +4984,12 @@ module top$lanes$1$shader$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4412,6 +4998,23 @@ module top$lanes$1$shader$mul_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_g
+module top$lanes$1$shader$mul_g$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mul_g$p
 module top$lanes$1$shader$mul_g$t(d,q,clock);
     
     // Module arguments
@@ -4443,11 +5046,19 @@ module top$lanes$1$shader$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
+    reg  [31:0] p$d;
+    wire  [31:0] p$q;
+    reg  p$clock;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
+    top$lanes$1$shader$mul_r$p p(
+        .d(p$d),
+        .q(p$q),
+        .clock(p$clock)
+    );
     top$lanes$1$shader$mul_r$t t(
         .d(t$d),
         .q(t$q),
@@ -4457,9 +5068,12 @@ module top$lanes$1$shader$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        p$clock = clock;
         t$clock = clock;
+        p$d = p$q;
         t$d = t$q;
-        t$d = a * b + half;
+        p$d = a * b;
+        t$d = p$q + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4468,6 +5082,23 @@ module top$lanes$1$shader$mul_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_r
+module top$lanes$1$shader$mul_r$p(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$mul_r$p
 module top$lanes$1$shader$mul_r$t(d,q,clock);
     
     // Module arguments
@@ -4689,6 +5320,23 @@ module top$lanes$1$shader$specular_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$specular_q
+module top$lanes$1$shader$specular_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$specular_qq
 module top$lanes$1$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -4808,6 +5456,40 @@ module top$lanes$1$shader$valid_q$14(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$valid_q$14
+module top$lanes$1$shader$valid_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$15
+module top$lanes$1$shader$valid_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$16
 module top$lanes$1$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -5046,6 +5728,40 @@ module top$lanes$1$shader$value_q$13(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$value_q$13
+module top$lanes$1$shader$value_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$14
+module top$lanes$1$shader$value_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$15
 module top$lanes$1$shader$value_q$2(d,q,clock);
     
     // Module arguments

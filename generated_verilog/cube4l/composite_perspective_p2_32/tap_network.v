@@ -962,7 +962,6 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -978,12 +977,15 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -998,7 +1000,6 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1016,15 +1017,20 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$0$taps$rows$beam0$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$0$taps$rows$beam0$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$0$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$0$taps$rows$beam0$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$0$taps$rows$beam0$one one(
         .d(one$d),
@@ -1051,15 +1057,17 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -1069,17 +1077,17 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1116,6 +1124,23 @@ module top$lanes$0$taps$rows$beam0$bound(d,q,clock);
     end
           
 endmodule // top$lanes$0$taps$rows$beam0$bound
+module top$lanes$0$taps$rows$beam0$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$head
 module top$lanes$0$taps$rows$beam0$is_one(d,q,clock);
     
     // Module arguments
@@ -1217,7 +1242,7 @@ module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$0$taps$rows$beam0$ram
-module top$lanes$0$taps$rows$beam0$rd_flipped(d,q,clock);
+module top$lanes$0$taps$rows$beam0$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1233,7 +1258,7 @@ module top$lanes$0$taps$rows$beam0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam0$rd_flipped
+endmodule // top$lanes$0$taps$rows$beam0$rd
 module top$lanes$0$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
@@ -1261,7 +1286,6 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -1277,12 +1301,15 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -1297,7 +1324,6 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1315,15 +1341,20 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$0$taps$rows$beam1$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$0$taps$rows$beam1$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$0$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$0$taps$rows$beam1$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$0$taps$rows$beam1$one one(
         .d(one$d),
@@ -1350,15 +1381,17 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -1368,17 +1401,17 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1415,6 +1448,23 @@ module top$lanes$0$taps$rows$beam1$bound(d,q,clock);
     end
           
 endmodule // top$lanes$0$taps$rows$beam1$bound
+module top$lanes$0$taps$rows$beam1$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$head
 module top$lanes$0$taps$rows$beam1$is_one(d,q,clock);
     
     // Module arguments
@@ -1516,7 +1566,7 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$0$taps$rows$beam1$ram
-module top$lanes$0$taps$rows$beam1$rd_flipped(d,q,clock);
+module top$lanes$0$taps$rows$beam1$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1532,7 +1582,7 @@ module top$lanes$0$taps$rows$beam1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam1$rd_flipped
+endmodule // top$lanes$0$taps$rows$beam1$rd
 module top$lanes$0$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
@@ -1577,7 +1627,6 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h1df;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -1593,12 +1642,15 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -1613,7 +1665,6 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1631,15 +1682,20 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$0$taps$rows$ring$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$0$taps$rows$ring$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$0$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$0$taps$rows$ring$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$0$taps$rows$ring$one one(
         .d(one$d),
@@ -1666,15 +1722,17 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -1684,17 +1742,17 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1731,6 +1789,23 @@ module top$lanes$0$taps$rows$ring$bound(d,q,clock);
     end
           
 endmodule // top$lanes$0$taps$rows$ring$bound
+module top$lanes$0$taps$rows$ring$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$head
 module top$lanes$0$taps$rows$ring$is_one(d,q,clock);
     
     // Module arguments
@@ -1831,7 +1906,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$0$taps$rows$ring$ram
-module top$lanes$0$taps$rows$ring$rd_flipped(d,q,clock);
+module top$lanes$0$taps$rows$ring$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1847,7 +1922,7 @@ module top$lanes$0$taps$rows$ring$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$ring$rd_flipped
+endmodule // top$lanes$0$taps$rows$ring$rd
 module top$lanes$0$taps$rows$ring$short(d,q,clock);
     
     // Module arguments
@@ -3951,7 +4026,6 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -3967,12 +4041,15 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -3987,7 +4064,6 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -4005,15 +4081,20 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$1$taps$rows$beam0$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$1$taps$rows$beam0$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$1$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$1$taps$rows$beam0$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$1$taps$rows$beam0$one one(
         .d(one$d),
@@ -4040,15 +4121,17 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -4058,17 +4141,17 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -4105,6 +4188,23 @@ module top$lanes$1$taps$rows$beam0$bound(d,q,clock);
     end
           
 endmodule // top$lanes$1$taps$rows$beam0$bound
+module top$lanes$1$taps$rows$beam0$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$head
 module top$lanes$1$taps$rows$beam0$is_one(d,q,clock);
     
     // Module arguments
@@ -4206,7 +4306,7 @@ module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$1$taps$rows$beam0$ram
-module top$lanes$1$taps$rows$beam0$rd_flipped(d,q,clock);
+module top$lanes$1$taps$rows$beam0$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4222,7 +4322,7 @@ module top$lanes$1$taps$rows$beam0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam0$rd_flipped
+endmodule // top$lanes$1$taps$rows$beam0$rd
 module top$lanes$1$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
@@ -4250,7 +4350,6 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'he;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -4266,12 +4365,15 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -4286,7 +4388,6 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -4304,15 +4405,20 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$1$taps$rows$beam1$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$1$taps$rows$beam1$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$1$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$1$taps$rows$beam1$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$1$taps$rows$beam1$one one(
         .d(one$d),
@@ -4339,15 +4445,17 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -4357,17 +4465,17 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -4404,6 +4512,23 @@ module top$lanes$1$taps$rows$beam1$bound(d,q,clock);
     end
           
 endmodule // top$lanes$1$taps$rows$beam1$bound
+module top$lanes$1$taps$rows$beam1$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$head
 module top$lanes$1$taps$rows$beam1$is_one(d,q,clock);
     
     // Module arguments
@@ -4505,7 +4630,7 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$1$taps$rows$beam1$ram
-module top$lanes$1$taps$rows$beam1$rd_flipped(d,q,clock);
+module top$lanes$1$taps$rows$beam1$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4521,7 +4646,7 @@ module top$lanes$1$taps$rows$beam1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam1$rd_flipped
+endmodule // top$lanes$1$taps$rows$beam1$rd
 module top$lanes$1$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
@@ -4566,7 +4691,6 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h1df;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -4582,12 +4706,15 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -4602,7 +4729,6 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -4620,15 +4746,20 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$1$taps$rows$ring$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$1$taps$rows$ring$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$1$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$1$taps$rows$ring$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$1$taps$rows$ring$one one(
         .d(one$d),
@@ -4655,15 +4786,17 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -4673,17 +4806,17 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -4720,6 +4853,23 @@ module top$lanes$1$taps$rows$ring$bound(d,q,clock);
     end
           
 endmodule // top$lanes$1$taps$rows$ring$bound
+module top$lanes$1$taps$rows$ring$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$head
 module top$lanes$1$taps$rows$ring$is_one(d,q,clock);
     
     // Module arguments
@@ -4820,7 +4970,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$1$taps$rows$ring$ram
-module top$lanes$1$taps$rows$ring$rd_flipped(d,q,clock);
+module top$lanes$1$taps$rows$ring$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4836,7 +4986,7 @@ module top$lanes$1$taps$rows$ring$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$ring$rd_flipped
+endmodule // top$lanes$1$taps$rows$ring$rd
 module top$lanes$1$taps$rows$ring$short(d,q,clock);
     
     // Module arguments

@@ -494,7 +494,6 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbd;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -510,12 +509,15 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -530,7 +532,6 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -548,15 +549,20 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$0$feed$abc$line_a$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$0$feed$abc$line_a$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$0$feed$abc$line_a$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$0$feed$abc$line_a$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$0$feed$abc$line_a$one one(
         .d(one$d),
@@ -583,15 +589,17 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -601,17 +609,17 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -648,6 +656,23 @@ module top$lanes$0$feed$abc$line_a$bound(d,q,clock);
     end
           
 endmodule // top$lanes$0$feed$abc$line_a$bound
+module top$lanes$0$feed$abc$line_a$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_a$head
 module top$lanes$0$feed$abc$line_a$is_one(d,q,clock);
     
     // Module arguments
@@ -769,7 +794,7 @@ module top$lanes$0$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$0$feed$abc$line_a$ram
-module top$lanes$0$feed$abc$line_a$rd_flipped(d,q,clock);
+module top$lanes$0$feed$abc$line_a$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -785,7 +810,7 @@ module top$lanes$0$feed$abc$line_a$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_a$rd_flipped
+endmodule // top$lanes$0$feed$abc$line_a$rd
 module top$lanes$0$feed$abc$line_a$short(d,q,clock);
     
     // Module arguments
@@ -813,7 +838,6 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -829,12 +853,15 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -849,7 +876,6 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -867,15 +893,20 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$0$feed$abc$line_b$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$0$feed$abc$line_b$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$0$feed$abc$line_b$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$0$feed$abc$line_b$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$0$feed$abc$line_b$one one(
         .d(one$d),
@@ -902,15 +933,17 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -920,17 +953,17 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -967,6 +1000,23 @@ module top$lanes$0$feed$abc$line_b$bound(d,q,clock);
     end
           
 endmodule // top$lanes$0$feed$abc$line_b$bound
+module top$lanes$0$feed$abc$line_b$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_b$head
 module top$lanes$0$feed$abc$line_b$is_one(d,q,clock);
     
     // Module arguments
@@ -1068,7 +1118,7 @@ module top$lanes$0$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$0$feed$abc$line_b$ram
-module top$lanes$0$feed$abc$line_b$rd_flipped(d,q,clock);
+module top$lanes$0$feed$abc$line_b$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1084,7 +1134,7 @@ module top$lanes$0$feed$abc$line_b$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_b$rd_flipped
+endmodule // top$lanes$0$feed$abc$line_b$rd
 module top$lanes$0$feed$abc$line_b$short(d,q,clock);
     
     // Module arguments
@@ -1112,7 +1162,6 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -1128,12 +1177,15 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -1148,7 +1200,6 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1166,15 +1217,20 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$0$feed$abc$line_c$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$0$feed$abc$line_c$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$0$feed$abc$line_c$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$0$feed$abc$line_c$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$0$feed$abc$line_c$one one(
         .d(one$d),
@@ -1201,15 +1257,17 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -1219,17 +1277,17 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1266,6 +1324,23 @@ module top$lanes$0$feed$abc$line_c$bound(d,q,clock);
     end
           
 endmodule // top$lanes$0$feed$abc$line_c$bound
+module top$lanes$0$feed$abc$line_c$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$head
 module top$lanes$0$feed$abc$line_c$is_one(d,q,clock);
     
     // Module arguments
@@ -1367,7 +1442,7 @@ module top$lanes$0$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$0$feed$abc$line_c$ram
-module top$lanes$0$feed$abc$line_c$rd_flipped(d,q,clock);
+module top$lanes$0$feed$abc$line_c$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1383,7 +1458,7 @@ module top$lanes$0$feed$abc$line_c$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_c$rd_flipped
+endmodule // top$lanes$0$feed$abc$line_c$rd
 module top$lanes$0$feed$abc$line_c$short(d,q,clock);
     
     // Module arguments
@@ -1411,7 +1486,6 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -1427,12 +1501,15 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -1447,7 +1524,6 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1465,15 +1541,20 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$0$feed$abc$line_d$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$0$feed$abc$line_d$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$0$feed$abc$line_d$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$0$feed$abc$line_d$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$0$feed$abc$line_d$one one(
         .d(one$d),
@@ -1500,15 +1581,17 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -1518,17 +1601,17 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1565,6 +1648,23 @@ module top$lanes$0$feed$abc$line_d$bound(d,q,clock);
     end
           
 endmodule // top$lanes$0$feed$abc$line_d$bound
+module top$lanes$0$feed$abc$line_d$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_d$head
 module top$lanes$0$feed$abc$line_d$is_one(d,q,clock);
     
     // Module arguments
@@ -1686,7 +1786,7 @@ module top$lanes$0$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$0$feed$abc$line_d$ram
-module top$lanes$0$feed$abc$line_d$rd_flipped(d,q,clock);
+module top$lanes$0$feed$abc$line_d$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1702,7 +1802,7 @@ module top$lanes$0$feed$abc$line_d$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$feed$abc$line_d$rd_flipped
+endmodule // top$lanes$0$feed$abc$line_d$rd
 module top$lanes$0$feed$abc$line_d$short(d,q,clock);
     
     // Module arguments
@@ -2301,7 +2401,6 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbd;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -2317,12 +2416,15 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -2337,7 +2439,6 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -2355,15 +2456,20 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$1$feed$abc$line_a$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$1$feed$abc$line_a$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$1$feed$abc$line_a$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$1$feed$abc$line_a$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$1$feed$abc$line_a$one one(
         .d(one$d),
@@ -2390,15 +2496,17 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -2408,17 +2516,17 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -2455,6 +2563,23 @@ module top$lanes$1$feed$abc$line_a$bound(d,q,clock);
     end
           
 endmodule // top$lanes$1$feed$abc$line_a$bound
+module top$lanes$1$feed$abc$line_a$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_a$head
 module top$lanes$1$feed$abc$line_a$is_one(d,q,clock);
     
     // Module arguments
@@ -2576,7 +2701,7 @@ module top$lanes$1$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$1$feed$abc$line_a$ram
-module top$lanes$1$feed$abc$line_a$rd_flipped(d,q,clock);
+module top$lanes$1$feed$abc$line_a$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2592,7 +2717,7 @@ module top$lanes$1$feed$abc$line_a$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_a$rd_flipped
+endmodule // top$lanes$1$feed$abc$line_a$rd
 module top$lanes$1$feed$abc$line_a$short(d,q,clock);
     
     // Module arguments
@@ -2620,7 +2745,6 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -2636,12 +2760,15 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -2656,7 +2783,6 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -2674,15 +2800,20 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$1$feed$abc$line_b$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$1$feed$abc$line_b$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$1$feed$abc$line_b$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$1$feed$abc$line_b$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$1$feed$abc$line_b$one one(
         .d(one$d),
@@ -2709,15 +2840,17 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -2727,17 +2860,17 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -2774,6 +2907,23 @@ module top$lanes$1$feed$abc$line_b$bound(d,q,clock);
     end
           
 endmodule // top$lanes$1$feed$abc$line_b$bound
+module top$lanes$1$feed$abc$line_b$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_b$head
 module top$lanes$1$feed$abc$line_b$is_one(d,q,clock);
     
     // Module arguments
@@ -2875,7 +3025,7 @@ module top$lanes$1$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$1$feed$abc$line_b$ram
-module top$lanes$1$feed$abc$line_b$rd_flipped(d,q,clock);
+module top$lanes$1$feed$abc$line_b$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2891,7 +3041,7 @@ module top$lanes$1$feed$abc$line_b$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_b$rd_flipped
+endmodule // top$lanes$1$feed$abc$line_b$rd
 module top$lanes$1$feed$abc$line_b$short(d,q,clock);
     
     // Module arguments
@@ -2919,7 +3069,6 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -2935,12 +3084,15 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -2955,7 +3107,6 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -2973,15 +3124,20 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$1$feed$abc$line_c$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$1$feed$abc$line_c$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$1$feed$abc$line_c$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$1$feed$abc$line_c$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$1$feed$abc$line_c$one one(
         .d(one$d),
@@ -3008,15 +3164,17 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -3026,17 +3184,17 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -3073,6 +3231,23 @@ module top$lanes$1$feed$abc$line_c$bound(d,q,clock);
     end
           
 endmodule // top$lanes$1$feed$abc$line_c$bound
+module top$lanes$1$feed$abc$line_c$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$head
 module top$lanes$1$feed$abc$line_c$is_one(d,q,clock);
     
     // Module arguments
@@ -3174,7 +3349,7 @@ module top$lanes$1$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$1$feed$abc$line_c$ram
-module top$lanes$1$feed$abc$line_c$rd_flipped(d,q,clock);
+module top$lanes$1$feed$abc$line_c$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3190,7 +3365,7 @@ module top$lanes$1$feed$abc$line_c$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_c$rd_flipped
+endmodule // top$lanes$1$feed$abc$line_c$rd
 module top$lanes$1$feed$abc$line_c$short(d,q,clock);
     
     // Module arguments
@@ -3218,7 +3393,6 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -3234,12 +3408,15 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -3254,7 +3431,6 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -3272,15 +3448,20 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$1$feed$abc$line_d$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$1$feed$abc$line_d$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$1$feed$abc$line_d$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$1$feed$abc$line_d$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$1$feed$abc$line_d$one one(
         .d(one$d),
@@ -3307,15 +3488,17 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -3325,17 +3508,17 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -3372,6 +3555,23 @@ module top$lanes$1$feed$abc$line_d$bound(d,q,clock);
     end
           
 endmodule // top$lanes$1$feed$abc$line_d$bound
+module top$lanes$1$feed$abc$line_d$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_d$head
 module top$lanes$1$feed$abc$line_d$is_one(d,q,clock);
     
     // Module arguments
@@ -3493,7 +3693,7 @@ module top$lanes$1$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$1$feed$abc$line_d$ram
-module top$lanes$1$feed$abc$line_d$rd_flipped(d,q,clock);
+module top$lanes$1$feed$abc$line_d$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3509,7 +3709,7 @@ module top$lanes$1$feed$abc$line_d$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$feed$abc$line_d$rd_flipped
+endmodule // top$lanes$1$feed$abc$line_d$rd
 module top$lanes$1$feed$abc$line_d$short(d,q,clock);
     
     // Module arguments
@@ -4108,7 +4308,6 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbd;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -4124,12 +4323,15 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -4144,7 +4346,6 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -4162,15 +4363,20 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$2$feed$abc$line_a$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$2$feed$abc$line_a$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$2$feed$abc$line_a$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$2$feed$abc$line_a$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$2$feed$abc$line_a$one one(
         .d(one$d),
@@ -4197,15 +4403,17 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -4215,17 +4423,17 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -4262,6 +4470,23 @@ module top$lanes$2$feed$abc$line_a$bound(d,q,clock);
     end
           
 endmodule // top$lanes$2$feed$abc$line_a$bound
+module top$lanes$2$feed$abc$line_a$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_a$head
 module top$lanes$2$feed$abc$line_a$is_one(d,q,clock);
     
     // Module arguments
@@ -4383,7 +4608,7 @@ module top$lanes$2$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$2$feed$abc$line_a$ram
-module top$lanes$2$feed$abc$line_a$rd_flipped(d,q,clock);
+module top$lanes$2$feed$abc$line_a$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4399,7 +4624,7 @@ module top$lanes$2$feed$abc$line_a$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_a$rd_flipped
+endmodule // top$lanes$2$feed$abc$line_a$rd
 module top$lanes$2$feed$abc$line_a$short(d,q,clock);
     
     // Module arguments
@@ -4427,7 +4652,6 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -4443,12 +4667,15 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -4463,7 +4690,6 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -4481,15 +4707,20 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$2$feed$abc$line_b$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$2$feed$abc$line_b$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$2$feed$abc$line_b$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$2$feed$abc$line_b$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$2$feed$abc$line_b$one one(
         .d(one$d),
@@ -4516,15 +4747,17 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -4534,17 +4767,17 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -4581,6 +4814,23 @@ module top$lanes$2$feed$abc$line_b$bound(d,q,clock);
     end
           
 endmodule // top$lanes$2$feed$abc$line_b$bound
+module top$lanes$2$feed$abc$line_b$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_b$head
 module top$lanes$2$feed$abc$line_b$is_one(d,q,clock);
     
     // Module arguments
@@ -4682,7 +4932,7 @@ module top$lanes$2$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$2$feed$abc$line_b$ram
-module top$lanes$2$feed$abc$line_b$rd_flipped(d,q,clock);
+module top$lanes$2$feed$abc$line_b$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4698,7 +4948,7 @@ module top$lanes$2$feed$abc$line_b$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_b$rd_flipped
+endmodule // top$lanes$2$feed$abc$line_b$rd
 module top$lanes$2$feed$abc$line_b$short(d,q,clock);
     
     // Module arguments
@@ -4726,7 +4976,6 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -4742,12 +4991,15 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -4762,7 +5014,6 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -4780,15 +5031,20 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$2$feed$abc$line_c$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$2$feed$abc$line_c$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$2$feed$abc$line_c$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$2$feed$abc$line_c$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$2$feed$abc$line_c$one one(
         .d(one$d),
@@ -4815,15 +5071,17 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -4833,17 +5091,17 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -4880,6 +5138,23 @@ module top$lanes$2$feed$abc$line_c$bound(d,q,clock);
     end
           
 endmodule // top$lanes$2$feed$abc$line_c$bound
+module top$lanes$2$feed$abc$line_c$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$head
 module top$lanes$2$feed$abc$line_c$is_one(d,q,clock);
     
     // Module arguments
@@ -4981,7 +5256,7 @@ module top$lanes$2$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$2$feed$abc$line_c$ram
-module top$lanes$2$feed$abc$line_c$rd_flipped(d,q,clock);
+module top$lanes$2$feed$abc$line_c$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4997,7 +5272,7 @@ module top$lanes$2$feed$abc$line_c$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_c$rd_flipped
+endmodule // top$lanes$2$feed$abc$line_c$rd
 module top$lanes$2$feed$abc$line_c$short(d,q,clock);
     
     // Module arguments
@@ -5025,7 +5300,6 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -5041,12 +5315,15 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -5061,7 +5338,6 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -5079,15 +5355,20 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$2$feed$abc$line_d$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$2$feed$abc$line_d$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$2$feed$abc$line_d$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$2$feed$abc$line_d$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$2$feed$abc$line_d$one one(
         .d(one$d),
@@ -5114,15 +5395,17 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -5132,17 +5415,17 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -5179,6 +5462,23 @@ module top$lanes$2$feed$abc$line_d$bound(d,q,clock);
     end
           
 endmodule // top$lanes$2$feed$abc$line_d$bound
+module top$lanes$2$feed$abc$line_d$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_d$head
 module top$lanes$2$feed$abc$line_d$is_one(d,q,clock);
     
     // Module arguments
@@ -5300,7 +5600,7 @@ module top$lanes$2$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$2$feed$abc$line_d$ram
-module top$lanes$2$feed$abc$line_d$rd_flipped(d,q,clock);
+module top$lanes$2$feed$abc$line_d$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -5316,7 +5616,7 @@ module top$lanes$2$feed$abc$line_d$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$feed$abc$line_d$rd_flipped
+endmodule // top$lanes$2$feed$abc$line_d$rd
 module top$lanes$2$feed$abc$line_d$short(d,q,clock);
     
     // Module arguments
@@ -5915,7 +6215,6 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbd;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -5931,12 +6230,15 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -5951,7 +6253,6 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -5969,15 +6270,20 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$3$feed$abc$line_a$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$3$feed$abc$line_a$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$3$feed$abc$line_a$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$3$feed$abc$line_a$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$3$feed$abc$line_a$one one(
         .d(one$d),
@@ -6004,15 +6310,17 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -6022,17 +6330,17 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -6069,6 +6377,23 @@ module top$lanes$3$feed$abc$line_a$bound(d,q,clock);
     end
           
 endmodule // top$lanes$3$feed$abc$line_a$bound
+module top$lanes$3$feed$abc$line_a$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_a$head
 module top$lanes$3$feed$abc$line_a$is_one(d,q,clock);
     
     // Module arguments
@@ -6190,7 +6515,7 @@ module top$lanes$3$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$3$feed$abc$line_a$ram
-module top$lanes$3$feed$abc$line_a$rd_flipped(d,q,clock);
+module top$lanes$3$feed$abc$line_a$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6206,7 +6531,7 @@ module top$lanes$3$feed$abc$line_a$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_a$rd_flipped
+endmodule // top$lanes$3$feed$abc$line_a$rd
 module top$lanes$3$feed$abc$line_a$short(d,q,clock);
     
     // Module arguments
@@ -6234,7 +6559,6 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -6250,12 +6574,15 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -6270,7 +6597,6 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -6288,15 +6614,20 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$3$feed$abc$line_b$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$3$feed$abc$line_b$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$3$feed$abc$line_b$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$3$feed$abc$line_b$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$3$feed$abc$line_b$one one(
         .d(one$d),
@@ -6323,15 +6654,17 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -6341,17 +6674,17 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -6388,6 +6721,23 @@ module top$lanes$3$feed$abc$line_b$bound(d,q,clock);
     end
           
 endmodule // top$lanes$3$feed$abc$line_b$bound
+module top$lanes$3$feed$abc$line_b$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_b$head
 module top$lanes$3$feed$abc$line_b$is_one(d,q,clock);
     
     // Module arguments
@@ -6489,7 +6839,7 @@ module top$lanes$3$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$3$feed$abc$line_b$ram
-module top$lanes$3$feed$abc$line_b$rd_flipped(d,q,clock);
+module top$lanes$3$feed$abc$line_b$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6505,7 +6855,7 @@ module top$lanes$3$feed$abc$line_b$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_b$rd_flipped
+endmodule // top$lanes$3$feed$abc$line_b$rd
 module top$lanes$3$feed$abc$line_b$short(d,q,clock);
     
     // Module arguments
@@ -6533,7 +6883,6 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -6549,12 +6898,15 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -6569,7 +6921,6 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -6587,15 +6938,20 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$3$feed$abc$line_c$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$3$feed$abc$line_c$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$3$feed$abc$line_c$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$3$feed$abc$line_c$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$3$feed$abc$line_c$one one(
         .d(one$d),
@@ -6622,15 +6978,17 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -6640,17 +6998,17 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -6687,6 +7045,23 @@ module top$lanes$3$feed$abc$line_c$bound(d,q,clock);
     end
           
 endmodule // top$lanes$3$feed$abc$line_c$bound
+module top$lanes$3$feed$abc$line_c$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$head
 module top$lanes$3$feed$abc$line_c$is_one(d,q,clock);
     
     // Module arguments
@@ -6788,7 +7163,7 @@ module top$lanes$3$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$3$feed$abc$line_c$ram
-module top$lanes$3$feed$abc$line_c$rd_flipped(d,q,clock);
+module top$lanes$3$feed$abc$line_c$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -6804,7 +7179,7 @@ module top$lanes$3$feed$abc$line_c$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_c$rd_flipped
+endmodule // top$lanes$3$feed$abc$line_c$rd
 module top$lanes$3$feed$abc$line_c$short(d,q,clock);
     
     // Module arguments
@@ -6832,7 +7207,6 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3fbe;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
@@ -6848,12 +7222,15 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
@@ -6868,7 +7245,6 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -6886,15 +7262,20 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$3$feed$abc$line_d$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$3$feed$abc$line_d$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$3$feed$abc$line_d$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$3$feed$abc$line_d$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$3$feed$abc$line_d$one one(
         .d(one$d),
@@ -6921,15 +7302,17 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -6939,17 +7322,17 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -6986,6 +7369,23 @@ module top$lanes$3$feed$abc$line_d$bound(d,q,clock);
     end
           
 endmodule // top$lanes$3$feed$abc$line_d$bound
+module top$lanes$3$feed$abc$line_d$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_d$head
 module top$lanes$3$feed$abc$line_d$is_one(d,q,clock);
     
     // Module arguments
@@ -7107,7 +7507,7 @@ module top$lanes$3$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$3$feed$abc$line_d$ram
-module top$lanes$3$feed$abc$line_d$rd_flipped(d,q,clock);
+module top$lanes$3$feed$abc$line_d$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7123,7 +7523,7 @@ module top$lanes$3$feed$abc$line_d$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$feed$abc$line_d$rd_flipped
+endmodule // top$lanes$3$feed$abc$line_d$rd
 module top$lanes$3$feed$abc$line_d$short(d,q,clock);
     
     // Module arguments

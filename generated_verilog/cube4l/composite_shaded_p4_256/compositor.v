@@ -388,6 +388,7 @@ module top$lanes$0$compositor$ch_a$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -410,6 +411,7 @@ module top$lanes$0$compositor$ch_a$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -417,7 +419,11 @@ module top$lanes$0$compositor$ch_a$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_a$mul
@@ -650,6 +656,7 @@ module top$lanes$0$compositor$ch_b$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -672,6 +679,7 @@ module top$lanes$0$compositor$ch_b$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -679,7 +687,11 @@ module top$lanes$0$compositor$ch_b$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_b$mul
@@ -912,6 +924,7 @@ module top$lanes$0$compositor$ch_g$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -934,6 +947,7 @@ module top$lanes$0$compositor$ch_g$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -941,7 +955,11 @@ module top$lanes$0$compositor$ch_g$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_g$mul
@@ -1174,6 +1192,7 @@ module top$lanes$0$compositor$ch_r$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -1196,6 +1215,7 @@ module top$lanes$0$compositor$ch_r$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -1203,7 +1223,11 @@ module top$lanes$0$compositor$ch_r$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$0$compositor$ch_r$mul
@@ -1767,6 +1791,7 @@ module top$lanes$1$compositor$ch_a$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -1789,6 +1814,7 @@ module top$lanes$1$compositor$ch_a$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -1796,7 +1822,11 @@ module top$lanes$1$compositor$ch_a$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_a$mul
@@ -2029,6 +2059,7 @@ module top$lanes$1$compositor$ch_b$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -2051,6 +2082,7 @@ module top$lanes$1$compositor$ch_b$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -2058,7 +2090,11 @@ module top$lanes$1$compositor$ch_b$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_b$mul
@@ -2291,6 +2327,7 @@ module top$lanes$1$compositor$ch_g$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -2313,6 +2350,7 @@ module top$lanes$1$compositor$ch_g$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -2320,7 +2358,11 @@ module top$lanes$1$compositor$ch_g$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_g$mul
@@ -2553,6 +2595,7 @@ module top$lanes$1$compositor$ch_r$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -2575,6 +2618,7 @@ module top$lanes$1$compositor$ch_r$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -2582,7 +2626,11 @@ module top$lanes$1$compositor$ch_r$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$1$compositor$ch_r$mul
@@ -3146,6 +3194,7 @@ module top$lanes$2$compositor$ch_a$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -3168,6 +3217,7 @@ module top$lanes$2$compositor$ch_a$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -3175,7 +3225,11 @@ module top$lanes$2$compositor$ch_a$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$2$compositor$ch_a$mul
@@ -3408,6 +3462,7 @@ module top$lanes$2$compositor$ch_b$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -3430,6 +3485,7 @@ module top$lanes$2$compositor$ch_b$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -3437,7 +3493,11 @@ module top$lanes$2$compositor$ch_b$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$2$compositor$ch_b$mul
@@ -3670,6 +3730,7 @@ module top$lanes$2$compositor$ch_g$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -3692,6 +3753,7 @@ module top$lanes$2$compositor$ch_g$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -3699,7 +3761,11 @@ module top$lanes$2$compositor$ch_g$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$2$compositor$ch_g$mul
@@ -3932,6 +3998,7 @@ module top$lanes$2$compositor$ch_r$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -3954,6 +4021,7 @@ module top$lanes$2$compositor$ch_r$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -3961,7 +4029,11 @@ module top$lanes$2$compositor$ch_r$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$2$compositor$ch_r$mul
@@ -4525,6 +4597,7 @@ module top$lanes$3$compositor$ch_a$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -4547,6 +4620,7 @@ module top$lanes$3$compositor$ch_a$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -4554,7 +4628,11 @@ module top$lanes$3$compositor$ch_a$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$3$compositor$ch_a$mul
@@ -4787,6 +4865,7 @@ module top$lanes$3$compositor$ch_b$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -4809,6 +4888,7 @@ module top$lanes$3$compositor$ch_b$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -4816,7 +4896,11 @@ module top$lanes$3$compositor$ch_b$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$3$compositor$ch_b$mul
@@ -5049,6 +5133,7 @@ module top$lanes$3$compositor$ch_g$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -5071,6 +5156,7 @@ module top$lanes$3$compositor$ch_g$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -5078,7 +5164,11 @@ module top$lanes$3$compositor$ch_g$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$3$compositor$ch_g$mul
@@ -5311,6 +5401,7 @@ module top$lanes$3$compositor$ch_r$mul(clock,a,b,y);
     // Constant declarations
     localparam  half = 'h80;
     localparam  shift = 8'h8;
+    localparam  enabled = 1'b1;
     
     // Stub signals
     reg  [31:0] p$d;
@@ -5333,6 +5424,7 @@ module top$lanes$3$compositor$ch_r$mul(clock,a,b,y);
     );
     
     // Update code
+    reg  [15:0] y_pass;
     always @(*) begin
         p$clock = clock;
         t$clock = clock;
@@ -5340,7 +5432,11 @@ module top$lanes$3$compositor$ch_r$mul(clock,a,b,y);
         t$d = t$q;
         p$d = a * b;
         t$d = p$q + half;
-        y = 16'((t$q + (t$q >> shift)) >> shift);
+        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
+        if (~enabled) begin
+            y_pass = 'h0;
+        end
+        y = y_pass;
     end
     
 endmodule // top$lanes$3$compositor$ch_r$mul

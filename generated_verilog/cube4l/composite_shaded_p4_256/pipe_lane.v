@@ -85,6 +85,9 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
     output reg  [15:0] px_y;
     output reg  [2:0] px_face;
     
+    // Constant declarations
+    localparam  coord_mask = 16'h3ff;
+    
     // Stub signals
     reg  feed$clock;
     reg  [63:0] feed$beats;
@@ -172,6 +175,7 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  ctl$dy_neg;
     reg  [15:0] ctl$dy_mag;
     reg  [63:0] ctl$dims;
+    reg  [15:0] ctl$coord_mask;
     wire  [15:0] ctl$x_t;
     wire  ctl$sr_t;
     wire  ctl$dx_neg_t;
@@ -387,6 +391,7 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dy_neg(ctl$dy_neg),
         .dy_mag(ctl$dy_mag),
         .dims(ctl$dims),
+        .coord_mask(ctl$coord_mask),
         .x_t(ctl$x_t),
         .sr_t(ctl$sr_t),
         .dx_neg_t(ctl$dx_neg_t),
@@ -569,6 +574,7 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         ctl$valid = feed$o_valid;
         ctl$er = feed$o_er;
         ctl$pad = feed$o_pad;
+        ctl$coord_mask = coord_mask;
         ctl$base_x = feed$o_base_x;
         ctl$base_y = feed$o_base_y;
         ctl$face = feed$o_face;
@@ -793,7 +799,7 @@ module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     end
     
 endmodule // top$lanes$0$cells
-module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -811,6 +817,7 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
     input wire  [63:0] dims;
+    input wire  [15:0] coord_mask;
     output reg  [15:0] x_t;
     output reg  sr_t;
     output reg  dx_neg_t;
@@ -863,6 +870,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] x_q$7$d;
     wire  [15:0] x_q$7$q;
     reg  x_q$7$clock;
+    reg  [15:0] x_q$8$d;
+    wire  [15:0] x_q$8$q;
+    reg  x_q$8$clock;
+    reg  [15:0] x_q$9$d;
+    wire  [15:0] x_q$9$q;
+    reg  x_q$9$clock;
     reg  [15:0] y_q$0$d;
     wire  [15:0] y_q$0$q;
     reg  y_q$0$clock;
@@ -884,6 +897,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] y_q$6$d;
     wire  [15:0] y_q$6$q;
     reg  y_q$6$clock;
+    reg  [15:0] y_q$7$d;
+    wire  [15:0] y_q$7$q;
+    reg  y_q$7$clock;
+    reg  [15:0] y_q$8$d;
+    wire  [15:0] y_q$8$q;
+    reg  y_q$8$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
@@ -908,6 +927,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  sr_q$7$d;
     wire  sr_q$7$q;
     reg  sr_q$7$clock;
+    reg  sr_q$8$d;
+    wire  sr_q$8$q;
+    reg  sr_q$8$clock;
+    reg  sr_q$9$d;
+    wire  sr_q$9$q;
+    reg  sr_q$9$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
@@ -932,6 +957,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dxn_q$7$d;
     wire  dxn_q$7$q;
     reg  dxn_q$7$clock;
+    reg  dxn_q$8$d;
+    wire  dxn_q$8$q;
+    reg  dxn_q$8$clock;
+    reg  dxn_q$9$d;
+    wire  dxn_q$9$q;
+    reg  dxn_q$9$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
@@ -956,6 +987,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] dxm_q$7$d;
     wire  [15:0] dxm_q$7$q;
     reg  dxm_q$7$clock;
+    reg  [15:0] dxm_q$8$d;
+    wire  [15:0] dxm_q$8$q;
+    reg  dxm_q$8$clock;
+    reg  [15:0] dxm_q$9$d;
+    wire  [15:0] dxm_q$9$q;
+    reg  dxm_q$9$clock;
     reg  dyn_q$0$d;
     wire  dyn_q$0$q;
     reg  dyn_q$0$clock;
@@ -980,6 +1017,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dyn_q$7$d;
     wire  dyn_q$7$q;
     reg  dyn_q$7$clock;
+    reg  dyn_q$8$d;
+    wire  dyn_q$8$q;
+    reg  dyn_q$8$clock;
+    reg  dyn_q$9$d;
+    wire  dyn_q$9$q;
+    reg  dyn_q$9$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
@@ -1004,6 +1047,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] dym_q$7$d;
     wire  [15:0] dym_q$7$q;
     reg  dym_q$7$clock;
+    reg  [15:0] dym_q$8$d;
+    wire  [15:0] dym_q$8$q;
+    reg  dym_q$8$clock;
+    reg  [15:0] dym_q$9$d;
+    wire  [15:0] dym_q$9$q;
+    reg  dym_q$9$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -1061,6 +1110,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$18$d;
     wire  v_q$18$q;
     reg  v_q$18$clock;
+    reg  v_q$19$d;
+    wire  v_q$19$q;
+    reg  v_q$19$clock;
+    reg  v_q$20$d;
+    wire  v_q$20$q;
+    reg  v_q$20$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -1118,6 +1173,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$18$d;
     wire  er_q$18$q;
     reg  er_q$18$clock;
+    reg  er_q$19$d;
+    wire  er_q$19$q;
+    reg  er_q$19$clock;
+    reg  er_q$20$d;
+    wire  er_q$20$q;
+    reg  er_q$20$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -1175,6 +1236,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$18$d;
     wire  pad_q$18$q;
     reg  pad_q$18$clock;
+    reg  pad_q$19$d;
+    wire  pad_q$19$q;
+    reg  pad_q$19$clock;
+    reg  pad_q$20$d;
+    wire  pad_q$20$q;
+    reg  pad_q$20$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -1232,6 +1299,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$18$d;
     wire  [15:0] bx_q$18$q;
     reg  bx_q$18$clock;
+    reg  [15:0] bx_q$19$d;
+    wire  [15:0] bx_q$19$q;
+    reg  bx_q$19$clock;
+    reg  [15:0] bx_q$20$d;
+    wire  [15:0] bx_q$20$q;
+    reg  bx_q$20$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -1289,6 +1362,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$18$d;
     wire  [15:0] by_q$18$q;
     reg  by_q$18$clock;
+    reg  [15:0] by_q$19$d;
+    wire  [15:0] by_q$19$q;
+    reg  by_q$19$clock;
+    reg  [15:0] by_q$20$d;
+    wire  [15:0] by_q$20$q;
+    reg  by_q$20$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -1346,6 +1425,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$18$d;
     wire  [2:0] face_q$18$q;
     reg  face_q$18$clock;
+    reg  [2:0] face_q$19$d;
+    wire  [2:0] face_q$19$q;
+    reg  face_q$19$clock;
+    reg  [2:0] face_q$20$d;
+    wire  [2:0] face_q$20$q;
+    reg  face_q$20$clock;
     
     // Sub module instances
     top$lanes$0$ctl$nx_last nx_last(
@@ -1408,6 +1493,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(x_q$7$q),
         .clock(x_q$7$clock)
     );
+    top$lanes$0$ctl$x_q$8 x_q$8(
+        .d(x_q$8$d),
+        .q(x_q$8$q),
+        .clock(x_q$8$clock)
+    );
+    top$lanes$0$ctl$x_q$9 x_q$9(
+        .d(x_q$9$d),
+        .q(x_q$9$q),
+        .clock(x_q$9$clock)
+    );
     top$lanes$0$ctl$y_q$0 y_q$0(
         .d(y_q$0$d),
         .q(y_q$0$q),
@@ -1442,6 +1537,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$6$d),
         .q(y_q$6$q),
         .clock(y_q$6$clock)
+    );
+    top$lanes$0$ctl$y_q$7 y_q$7(
+        .d(y_q$7$d),
+        .q(y_q$7$q),
+        .clock(y_q$7$clock)
+    );
+    top$lanes$0$ctl$y_q$8 y_q$8(
+        .d(y_q$8$d),
+        .q(y_q$8$q),
+        .clock(y_q$8$clock)
     );
     top$lanes$0$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -1483,6 +1588,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$7$q),
         .clock(sr_q$7$clock)
     );
+    top$lanes$0$ctl$sr_q$8 sr_q$8(
+        .d(sr_q$8$d),
+        .q(sr_q$8$q),
+        .clock(sr_q$8$clock)
+    );
+    top$lanes$0$ctl$sr_q$9 sr_q$9(
+        .d(sr_q$9$d),
+        .q(sr_q$9$q),
+        .clock(sr_q$9$clock)
+    );
     top$lanes$0$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -1522,6 +1637,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$7$d),
         .q(dxn_q$7$q),
         .clock(dxn_q$7$clock)
+    );
+    top$lanes$0$ctl$dxn_q$8 dxn_q$8(
+        .d(dxn_q$8$d),
+        .q(dxn_q$8$q),
+        .clock(dxn_q$8$clock)
+    );
+    top$lanes$0$ctl$dxn_q$9 dxn_q$9(
+        .d(dxn_q$9$d),
+        .q(dxn_q$9$q),
+        .clock(dxn_q$9$clock)
     );
     top$lanes$0$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -1563,6 +1688,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dxm_q$7$q),
         .clock(dxm_q$7$clock)
     );
+    top$lanes$0$ctl$dxm_q$8 dxm_q$8(
+        .d(dxm_q$8$d),
+        .q(dxm_q$8$q),
+        .clock(dxm_q$8$clock)
+    );
+    top$lanes$0$ctl$dxm_q$9 dxm_q$9(
+        .d(dxm_q$9$d),
+        .q(dxm_q$9$q),
+        .clock(dxm_q$9$clock)
+    );
     top$lanes$0$ctl$dyn_q$0 dyn_q$0(
         .d(dyn_q$0$d),
         .q(dyn_q$0$q),
@@ -1603,6 +1738,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dyn_q$7$q),
         .clock(dyn_q$7$clock)
     );
+    top$lanes$0$ctl$dyn_q$8 dyn_q$8(
+        .d(dyn_q$8$d),
+        .q(dyn_q$8$q),
+        .clock(dyn_q$8$clock)
+    );
+    top$lanes$0$ctl$dyn_q$9 dyn_q$9(
+        .d(dyn_q$9$d),
+        .q(dyn_q$9$q),
+        .clock(dyn_q$9$clock)
+    );
     top$lanes$0$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
         .q(dym_q$0$q),
@@ -1642,6 +1787,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dym_q$7$d),
         .q(dym_q$7$q),
         .clock(dym_q$7$clock)
+    );
+    top$lanes$0$ctl$dym_q$8 dym_q$8(
+        .d(dym_q$8$d),
+        .q(dym_q$8$q),
+        .clock(dym_q$8$clock)
+    );
+    top$lanes$0$ctl$dym_q$9 dym_q$9(
+        .d(dym_q$9$d),
+        .q(dym_q$9$q),
+        .clock(dym_q$9$clock)
     );
     top$lanes$0$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -1738,6 +1893,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$18$q),
         .clock(v_q$18$clock)
     );
+    top$lanes$0$ctl$v_q$19 v_q$19(
+        .d(v_q$19$d),
+        .q(v_q$19$q),
+        .clock(v_q$19$clock)
+    );
+    top$lanes$0$ctl$v_q$20 v_q$20(
+        .d(v_q$20$d),
+        .q(v_q$20$q),
+        .clock(v_q$20$clock)
+    );
     top$lanes$0$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -1832,6 +1997,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$18$d),
         .q(er_q$18$q),
         .clock(er_q$18$clock)
+    );
+    top$lanes$0$ctl$er_q$19 er_q$19(
+        .d(er_q$19$d),
+        .q(er_q$19$q),
+        .clock(er_q$19$clock)
+    );
+    top$lanes$0$ctl$er_q$20 er_q$20(
+        .d(er_q$20$d),
+        .q(er_q$20$q),
+        .clock(er_q$20$clock)
     );
     top$lanes$0$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -1928,6 +2103,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$18$q),
         .clock(pad_q$18$clock)
     );
+    top$lanes$0$ctl$pad_q$19 pad_q$19(
+        .d(pad_q$19$d),
+        .q(pad_q$19$q),
+        .clock(pad_q$19$clock)
+    );
+    top$lanes$0$ctl$pad_q$20 pad_q$20(
+        .d(pad_q$20$d),
+        .q(pad_q$20$q),
+        .clock(pad_q$20$clock)
+    );
     top$lanes$0$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -2022,6 +2207,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$18$d),
         .q(bx_q$18$q),
         .clock(bx_q$18$clock)
+    );
+    top$lanes$0$ctl$bx_q$19 bx_q$19(
+        .d(bx_q$19$d),
+        .q(bx_q$19$q),
+        .clock(bx_q$19$clock)
+    );
+    top$lanes$0$ctl$bx_q$20 bx_q$20(
+        .d(bx_q$20$d),
+        .q(bx_q$20$q),
+        .clock(bx_q$20$clock)
     );
     top$lanes$0$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -2118,6 +2313,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$18$q),
         .clock(by_q$18$clock)
     );
+    top$lanes$0$ctl$by_q$19 by_q$19(
+        .d(by_q$19$d),
+        .q(by_q$19$q),
+        .clock(by_q$19$clock)
+    );
+    top$lanes$0$ctl$by_q$20 by_q$20(
+        .d(by_q$20$d),
+        .q(by_q$20$q),
+        .clock(by_q$20$clock)
+    );
     top$lanes$0$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -2213,6 +2418,16 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$18$q),
         .clock(face_q$18$clock)
     );
+    top$lanes$0$ctl$face_q$19 face_q$19(
+        .d(face_q$19$d),
+        .q(face_q$19$q),
+        .clock(face_q$19$clock)
+    );
+    top$lanes$0$ctl$face_q$20 face_q$20(
+        .d(face_q$20$d),
+        .q(face_q$20$q),
+        .clock(face_q$20$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -2272,6 +2487,18 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$7$clock = clock;
         dyn_q$7$clock = clock;
         dym_q$7$clock = clock;
+        x_q$8$clock = clock;
+        sr_q$8$clock = clock;
+        dxn_q$8$clock = clock;
+        dxm_q$8$clock = clock;
+        dyn_q$8$clock = clock;
+        dym_q$8$clock = clock;
+        x_q$9$clock = clock;
+        sr_q$9$clock = clock;
+        dxn_q$9$clock = clock;
+        dxm_q$9$clock = clock;
+        dyn_q$9$clock = clock;
+        dym_q$9$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -2386,8 +2613,20 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$18$clock = clock;
         by_q$18$clock = clock;
         face_q$18$clock = clock;
-        x_q$0$d = x;
-        y_q$0$d = y;
+        v_q$19$clock = clock;
+        er_q$19$clock = clock;
+        pad_q$19$clock = clock;
+        bx_q$19$clock = clock;
+        by_q$19$clock = clock;
+        face_q$19$clock = clock;
+        v_q$20$clock = clock;
+        er_q$20$clock = clock;
+        pad_q$20$clock = clock;
+        bx_q$20$clock = clock;
+        by_q$20$clock = clock;
+        face_q$20$clock = clock;
+        x_q$0$d = x & coord_mask;
+        y_q$0$d = y & coord_mask;
         sr_q$0$d = sr;
         dxn_q$0$d = dx_neg;
         dxm_q$0$d = dx_mag;
@@ -2435,6 +2674,18 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$7$d = dxm_q$6$q;
         dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
+        x_q$8$d = x_q$7$q;
+        sr_q$8$d = sr_q$7$q;
+        dxn_q$8$d = dxn_q$7$q;
+        dxm_q$8$d = dxm_q$7$q;
+        dyn_q$8$d = dyn_q$7$q;
+        dym_q$8$d = dym_q$7$q;
+        x_q$9$d = x_q$8$q;
+        sr_q$9$d = sr_q$8$q;
+        dxn_q$9$d = dxn_q$8$q;
+        dxm_q$9$d = dxm_q$8$q;
+        dyn_q$9$d = dyn_q$8$q;
+        dym_q$9$d = dym_q$8$q;
         y_q$0$clock = clock;
         y_q$1$clock = clock;
         y_q$2$clock = clock;
@@ -2442,36 +2693,40 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         y_q$4$clock = clock;
         y_q$5$clock = clock;
         y_q$6$clock = clock;
+        y_q$7$clock = clock;
+        y_q$8$clock = clock;
         y_q$1$d = y_q$0$q;
         y_q$2$d = y_q$1$q;
         y_q$3$d = y_q$2$q;
         y_q$4$d = y_q$3$q;
         y_q$5$d = y_q$4$q;
         y_q$6$d = y_q$5$q;
-        x_t = x_q$7$q;
-        sr_t = sr_q$7$q;
-        dx_neg_t = dxn_q$7$q;
-        dx_mag_t = dxm_q$7$q;
-        dy_neg_t = dyn_q$7$q;
-        dy_mag_t = dym_q$7$q;
+        y_q$7$d = y_q$6$q;
+        y_q$8$d = y_q$7$q;
+        x_t = x_q$9$q;
+        sr_t = sr_q$9$q;
+        dx_neg_t = dxn_q$9$q;
+        dx_mag_t = dxm_q$9$q;
+        dy_neg_t = dyn_q$9$q;
+        dy_mag_t = dym_q$9$q;
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         x_out_q$d = 1'b0;
-        if (dxm_q$6$q != 'h0) begin
-            if (dxn_q$6$q) begin
-                x_out_q$d = x_q$6$q == nx_last$q;
+        if (dxm_q$8$q != 'h0) begin
+            if (dxn_q$8$q) begin
+                x_out_q$d = x_q$8$q == nx_last$q;
             end
             else begin
-                x_out_q$d = x_q$6$q == 'h0;
+                x_out_q$d = x_q$8$q == 'h0;
             end
         end
         y_out_q$d = 1'b0;
-        if (dym_q$6$q != 'h0) begin
-            if (dyn_q$6$q) begin
-                y_out_q$d = y_q$6$q == ny_last$q;
+        if (dym_q$8$q != 'h0) begin
+            if (dyn_q$8$q) begin
+                y_out_q$d = y_q$8$q == ny_last$q;
             end
             else begin
-                y_out_q$d = y_q$6$q == 'h0;
+                y_out_q$d = y_q$8$q == 'h0;
             end
         end
         x_out_t = x_out_q$q;
@@ -2479,8 +2734,8 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
-        bx_q$0$d = base_x;
-        by_q$0$d = base_y;
+        bx_q$0$d = base_x & coord_mask;
+        by_q$0$d = base_y & coord_mask;
         face_q$0$d = face;
         v_q$1$d = v_q$0$q;
         er_q$1$d = er_q$0$q;
@@ -2590,12 +2845,24 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$18$d = bx_q$17$q;
         by_q$18$d = by_q$17$q;
         face_q$18$d = face_q$17$q;
-        res_beat = v_q$18$q;
-        res_valid = v_q$18$q & ~pad_q$18$q;
-        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
-        px_x = bx_q$18$q;
-        px_y = by_q$18$q;
-        px_face = face_q$18$q;
+        v_q$19$d = v_q$18$q;
+        er_q$19$d = er_q$18$q;
+        pad_q$19$d = pad_q$18$q;
+        bx_q$19$d = bx_q$18$q;
+        by_q$19$d = by_q$18$q;
+        face_q$19$d = face_q$18$q;
+        v_q$20$d = v_q$19$q;
+        er_q$20$d = er_q$19$q;
+        pad_q$20$d = pad_q$19$q;
+        bx_q$20$d = bx_q$19$q;
+        by_q$20$d = by_q$19$q;
+        face_q$20$d = face_q$19$q;
+        res_beat = v_q$20$q;
+        res_valid = v_q$20$q & ~pad_q$20$q;
+        px_valid = v_q$20$q & er_q$20$q & ~pad_q$20$q;
+        px_x = bx_q$20$q;
+        px_y = by_q$20$q;
+        px_face = face_q$20$q;
     end
     
 endmodule // top$lanes$0$ctl
@@ -2786,6 +3053,23 @@ module top$lanes$0$ctl$bx_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$bx_q$18
+module top$lanes$0$ctl$bx_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$19
 module top$lanes$0$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -2803,6 +3087,23 @@ module top$lanes$0$ctl$bx_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$bx_q$2
+module top$lanes$0$ctl$bx_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$bx_q$20
 module top$lanes$0$ctl$bx_q$3(d,q,clock);
     
     // Module arguments
@@ -3109,6 +3410,23 @@ module top$lanes$0$ctl$by_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$by_q$18
+module top$lanes$0$ctl$by_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$19
 module top$lanes$0$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -3126,6 +3444,23 @@ module top$lanes$0$ctl$by_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$by_q$2
+module top$lanes$0$ctl$by_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$by_q$20
 module top$lanes$0$ctl$by_q$3(d,q,clock);
     
     // Module arguments
@@ -3381,6 +3716,40 @@ module top$lanes$0$ctl$dxm_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dxm_q$7
+module top$lanes$0$ctl$dxm_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$8
+module top$lanes$0$ctl$dxm_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxm_q$9
 module top$lanes$0$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
@@ -3517,6 +3886,40 @@ module top$lanes$0$ctl$dxn_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dxn_q$7
+module top$lanes$0$ctl$dxn_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$8
+module top$lanes$0$ctl$dxn_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dxn_q$9
 module top$lanes$0$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -3653,6 +4056,40 @@ module top$lanes$0$ctl$dym_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dym_q$7
+module top$lanes$0$ctl$dym_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$8
+module top$lanes$0$ctl$dym_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dym_q$9
 module top$lanes$0$ctl$dyn_q$0(d,q,clock);
     
     // Module arguments
@@ -3789,6 +4226,40 @@ module top$lanes$0$ctl$dyn_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dyn_q$7
+module top$lanes$0$ctl$dyn_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$8
+module top$lanes$0$ctl$dyn_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$dyn_q$9
 module top$lanes$0$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -3976,6 +4447,23 @@ module top$lanes$0$ctl$er_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$er_q$18
+module top$lanes$0$ctl$er_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$19
 module top$lanes$0$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -3993,6 +4481,23 @@ module top$lanes$0$ctl$er_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$er_q$2
+module top$lanes$0$ctl$er_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$er_q$20
 module top$lanes$0$ctl$er_q$3(d,q,clock);
     
     // Module arguments
@@ -4299,6 +4804,23 @@ module top$lanes$0$ctl$face_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$18
+module top$lanes$0$ctl$face_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$19
 module top$lanes$0$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -4316,6 +4838,23 @@ module top$lanes$0$ctl$face_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$face_q$2
+module top$lanes$0$ctl$face_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$face_q$20
 module top$lanes$0$ctl$face_q$3(d,q,clock);
     
     // Module arguments
@@ -4656,6 +5195,23 @@ module top$lanes$0$ctl$pad_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$18
+module top$lanes$0$ctl$pad_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$19
 module top$lanes$0$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -4673,6 +5229,23 @@ module top$lanes$0$ctl$pad_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$2
+module top$lanes$0$ctl$pad_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$pad_q$20
 module top$lanes$0$ctl$pad_q$3(d,q,clock);
     
     // Module arguments
@@ -4928,6 +5501,40 @@ module top$lanes$0$ctl$sr_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$sr_q$7
+module top$lanes$0$ctl$sr_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$8
+module top$lanes$0$ctl$sr_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$sr_q$9
 module top$lanes$0$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -5115,6 +5722,23 @@ module top$lanes$0$ctl$v_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$18
+module top$lanes$0$ctl$v_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$19
 module top$lanes$0$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -5132,6 +5756,23 @@ module top$lanes$0$ctl$v_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$2
+module top$lanes$0$ctl$v_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$v_q$20
 module top$lanes$0$ctl$v_q$3(d,q,clock);
     
     // Module arguments
@@ -5404,6 +6045,40 @@ module top$lanes$0$ctl$x_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$x_q$7
+module top$lanes$0$ctl$x_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$8
+module top$lanes$0$ctl$x_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$x_q$9
 module top$lanes$0$ctl$y_out_q(d,q,clock);
     
     // Module arguments
@@ -5540,6 +6215,40 @@ module top$lanes$0$ctl$y_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$y_q$6
+module top$lanes$0$ctl$y_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$7
+module top$lanes$0$ctl$y_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$ctl$y_q$8
 module top$lanes$0$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -5772,6 +6481,9 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
     output reg  [15:0] px_y;
     output reg  [2:0] px_face;
     
+    // Constant declarations
+    localparam  coord_mask = 16'h3ff;
+    
     // Stub signals
     reg  feed$clock;
     reg  [63:0] feed$beats;
@@ -5859,6 +6571,7 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  ctl$dy_neg;
     reg  [15:0] ctl$dy_mag;
     reg  [63:0] ctl$dims;
+    reg  [15:0] ctl$coord_mask;
     wire  [15:0] ctl$x_t;
     wire  ctl$sr_t;
     wire  ctl$dx_neg_t;
@@ -6074,6 +6787,7 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dy_neg(ctl$dy_neg),
         .dy_mag(ctl$dy_mag),
         .dims(ctl$dims),
+        .coord_mask(ctl$coord_mask),
         .x_t(ctl$x_t),
         .sr_t(ctl$sr_t),
         .dx_neg_t(ctl$dx_neg_t),
@@ -6256,6 +6970,7 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         ctl$valid = feed$o_valid;
         ctl$er = feed$o_er;
         ctl$pad = feed$o_pad;
+        ctl$coord_mask = coord_mask;
         ctl$base_x = feed$o_base_x;
         ctl$base_y = feed$o_base_y;
         ctl$face = feed$o_face;
@@ -6480,7 +7195,7 @@ module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     end
     
 endmodule // top$lanes$1$cells
-module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -6498,6 +7213,7 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
     input wire  [63:0] dims;
+    input wire  [15:0] coord_mask;
     output reg  [15:0] x_t;
     output reg  sr_t;
     output reg  dx_neg_t;
@@ -6550,6 +7266,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] x_q$7$d;
     wire  [15:0] x_q$7$q;
     reg  x_q$7$clock;
+    reg  [15:0] x_q$8$d;
+    wire  [15:0] x_q$8$q;
+    reg  x_q$8$clock;
+    reg  [15:0] x_q$9$d;
+    wire  [15:0] x_q$9$q;
+    reg  x_q$9$clock;
     reg  [15:0] y_q$0$d;
     wire  [15:0] y_q$0$q;
     reg  y_q$0$clock;
@@ -6571,6 +7293,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] y_q$6$d;
     wire  [15:0] y_q$6$q;
     reg  y_q$6$clock;
+    reg  [15:0] y_q$7$d;
+    wire  [15:0] y_q$7$q;
+    reg  y_q$7$clock;
+    reg  [15:0] y_q$8$d;
+    wire  [15:0] y_q$8$q;
+    reg  y_q$8$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
@@ -6595,6 +7323,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  sr_q$7$d;
     wire  sr_q$7$q;
     reg  sr_q$7$clock;
+    reg  sr_q$8$d;
+    wire  sr_q$8$q;
+    reg  sr_q$8$clock;
+    reg  sr_q$9$d;
+    wire  sr_q$9$q;
+    reg  sr_q$9$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
@@ -6619,6 +7353,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dxn_q$7$d;
     wire  dxn_q$7$q;
     reg  dxn_q$7$clock;
+    reg  dxn_q$8$d;
+    wire  dxn_q$8$q;
+    reg  dxn_q$8$clock;
+    reg  dxn_q$9$d;
+    wire  dxn_q$9$q;
+    reg  dxn_q$9$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
@@ -6643,6 +7383,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] dxm_q$7$d;
     wire  [15:0] dxm_q$7$q;
     reg  dxm_q$7$clock;
+    reg  [15:0] dxm_q$8$d;
+    wire  [15:0] dxm_q$8$q;
+    reg  dxm_q$8$clock;
+    reg  [15:0] dxm_q$9$d;
+    wire  [15:0] dxm_q$9$q;
+    reg  dxm_q$9$clock;
     reg  dyn_q$0$d;
     wire  dyn_q$0$q;
     reg  dyn_q$0$clock;
@@ -6667,6 +7413,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dyn_q$7$d;
     wire  dyn_q$7$q;
     reg  dyn_q$7$clock;
+    reg  dyn_q$8$d;
+    wire  dyn_q$8$q;
+    reg  dyn_q$8$clock;
+    reg  dyn_q$9$d;
+    wire  dyn_q$9$q;
+    reg  dyn_q$9$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
@@ -6691,6 +7443,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] dym_q$7$d;
     wire  [15:0] dym_q$7$q;
     reg  dym_q$7$clock;
+    reg  [15:0] dym_q$8$d;
+    wire  [15:0] dym_q$8$q;
+    reg  dym_q$8$clock;
+    reg  [15:0] dym_q$9$d;
+    wire  [15:0] dym_q$9$q;
+    reg  dym_q$9$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -6748,6 +7506,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$18$d;
     wire  v_q$18$q;
     reg  v_q$18$clock;
+    reg  v_q$19$d;
+    wire  v_q$19$q;
+    reg  v_q$19$clock;
+    reg  v_q$20$d;
+    wire  v_q$20$q;
+    reg  v_q$20$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -6805,6 +7569,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$18$d;
     wire  er_q$18$q;
     reg  er_q$18$clock;
+    reg  er_q$19$d;
+    wire  er_q$19$q;
+    reg  er_q$19$clock;
+    reg  er_q$20$d;
+    wire  er_q$20$q;
+    reg  er_q$20$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -6862,6 +7632,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$18$d;
     wire  pad_q$18$q;
     reg  pad_q$18$clock;
+    reg  pad_q$19$d;
+    wire  pad_q$19$q;
+    reg  pad_q$19$clock;
+    reg  pad_q$20$d;
+    wire  pad_q$20$q;
+    reg  pad_q$20$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -6919,6 +7695,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$18$d;
     wire  [15:0] bx_q$18$q;
     reg  bx_q$18$clock;
+    reg  [15:0] bx_q$19$d;
+    wire  [15:0] bx_q$19$q;
+    reg  bx_q$19$clock;
+    reg  [15:0] bx_q$20$d;
+    wire  [15:0] bx_q$20$q;
+    reg  bx_q$20$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -6976,6 +7758,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$18$d;
     wire  [15:0] by_q$18$q;
     reg  by_q$18$clock;
+    reg  [15:0] by_q$19$d;
+    wire  [15:0] by_q$19$q;
+    reg  by_q$19$clock;
+    reg  [15:0] by_q$20$d;
+    wire  [15:0] by_q$20$q;
+    reg  by_q$20$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -7033,6 +7821,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$18$d;
     wire  [2:0] face_q$18$q;
     reg  face_q$18$clock;
+    reg  [2:0] face_q$19$d;
+    wire  [2:0] face_q$19$q;
+    reg  face_q$19$clock;
+    reg  [2:0] face_q$20$d;
+    wire  [2:0] face_q$20$q;
+    reg  face_q$20$clock;
     
     // Sub module instances
     top$lanes$1$ctl$nx_last nx_last(
@@ -7095,6 +7889,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(x_q$7$q),
         .clock(x_q$7$clock)
     );
+    top$lanes$1$ctl$x_q$8 x_q$8(
+        .d(x_q$8$d),
+        .q(x_q$8$q),
+        .clock(x_q$8$clock)
+    );
+    top$lanes$1$ctl$x_q$9 x_q$9(
+        .d(x_q$9$d),
+        .q(x_q$9$q),
+        .clock(x_q$9$clock)
+    );
     top$lanes$1$ctl$y_q$0 y_q$0(
         .d(y_q$0$d),
         .q(y_q$0$q),
@@ -7129,6 +7933,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$6$d),
         .q(y_q$6$q),
         .clock(y_q$6$clock)
+    );
+    top$lanes$1$ctl$y_q$7 y_q$7(
+        .d(y_q$7$d),
+        .q(y_q$7$q),
+        .clock(y_q$7$clock)
+    );
+    top$lanes$1$ctl$y_q$8 y_q$8(
+        .d(y_q$8$d),
+        .q(y_q$8$q),
+        .clock(y_q$8$clock)
     );
     top$lanes$1$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -7170,6 +7984,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$7$q),
         .clock(sr_q$7$clock)
     );
+    top$lanes$1$ctl$sr_q$8 sr_q$8(
+        .d(sr_q$8$d),
+        .q(sr_q$8$q),
+        .clock(sr_q$8$clock)
+    );
+    top$lanes$1$ctl$sr_q$9 sr_q$9(
+        .d(sr_q$9$d),
+        .q(sr_q$9$q),
+        .clock(sr_q$9$clock)
+    );
     top$lanes$1$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -7209,6 +8033,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$7$d),
         .q(dxn_q$7$q),
         .clock(dxn_q$7$clock)
+    );
+    top$lanes$1$ctl$dxn_q$8 dxn_q$8(
+        .d(dxn_q$8$d),
+        .q(dxn_q$8$q),
+        .clock(dxn_q$8$clock)
+    );
+    top$lanes$1$ctl$dxn_q$9 dxn_q$9(
+        .d(dxn_q$9$d),
+        .q(dxn_q$9$q),
+        .clock(dxn_q$9$clock)
     );
     top$lanes$1$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -7250,6 +8084,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dxm_q$7$q),
         .clock(dxm_q$7$clock)
     );
+    top$lanes$1$ctl$dxm_q$8 dxm_q$8(
+        .d(dxm_q$8$d),
+        .q(dxm_q$8$q),
+        .clock(dxm_q$8$clock)
+    );
+    top$lanes$1$ctl$dxm_q$9 dxm_q$9(
+        .d(dxm_q$9$d),
+        .q(dxm_q$9$q),
+        .clock(dxm_q$9$clock)
+    );
     top$lanes$1$ctl$dyn_q$0 dyn_q$0(
         .d(dyn_q$0$d),
         .q(dyn_q$0$q),
@@ -7290,6 +8134,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dyn_q$7$q),
         .clock(dyn_q$7$clock)
     );
+    top$lanes$1$ctl$dyn_q$8 dyn_q$8(
+        .d(dyn_q$8$d),
+        .q(dyn_q$8$q),
+        .clock(dyn_q$8$clock)
+    );
+    top$lanes$1$ctl$dyn_q$9 dyn_q$9(
+        .d(dyn_q$9$d),
+        .q(dyn_q$9$q),
+        .clock(dyn_q$9$clock)
+    );
     top$lanes$1$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
         .q(dym_q$0$q),
@@ -7329,6 +8183,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dym_q$7$d),
         .q(dym_q$7$q),
         .clock(dym_q$7$clock)
+    );
+    top$lanes$1$ctl$dym_q$8 dym_q$8(
+        .d(dym_q$8$d),
+        .q(dym_q$8$q),
+        .clock(dym_q$8$clock)
+    );
+    top$lanes$1$ctl$dym_q$9 dym_q$9(
+        .d(dym_q$9$d),
+        .q(dym_q$9$q),
+        .clock(dym_q$9$clock)
     );
     top$lanes$1$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -7425,6 +8289,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$18$q),
         .clock(v_q$18$clock)
     );
+    top$lanes$1$ctl$v_q$19 v_q$19(
+        .d(v_q$19$d),
+        .q(v_q$19$q),
+        .clock(v_q$19$clock)
+    );
+    top$lanes$1$ctl$v_q$20 v_q$20(
+        .d(v_q$20$d),
+        .q(v_q$20$q),
+        .clock(v_q$20$clock)
+    );
     top$lanes$1$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -7519,6 +8393,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$18$d),
         .q(er_q$18$q),
         .clock(er_q$18$clock)
+    );
+    top$lanes$1$ctl$er_q$19 er_q$19(
+        .d(er_q$19$d),
+        .q(er_q$19$q),
+        .clock(er_q$19$clock)
+    );
+    top$lanes$1$ctl$er_q$20 er_q$20(
+        .d(er_q$20$d),
+        .q(er_q$20$q),
+        .clock(er_q$20$clock)
     );
     top$lanes$1$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -7615,6 +8499,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$18$q),
         .clock(pad_q$18$clock)
     );
+    top$lanes$1$ctl$pad_q$19 pad_q$19(
+        .d(pad_q$19$d),
+        .q(pad_q$19$q),
+        .clock(pad_q$19$clock)
+    );
+    top$lanes$1$ctl$pad_q$20 pad_q$20(
+        .d(pad_q$20$d),
+        .q(pad_q$20$q),
+        .clock(pad_q$20$clock)
+    );
     top$lanes$1$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -7709,6 +8603,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$18$d),
         .q(bx_q$18$q),
         .clock(bx_q$18$clock)
+    );
+    top$lanes$1$ctl$bx_q$19 bx_q$19(
+        .d(bx_q$19$d),
+        .q(bx_q$19$q),
+        .clock(bx_q$19$clock)
+    );
+    top$lanes$1$ctl$bx_q$20 bx_q$20(
+        .d(bx_q$20$d),
+        .q(bx_q$20$q),
+        .clock(bx_q$20$clock)
     );
     top$lanes$1$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -7805,6 +8709,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$18$q),
         .clock(by_q$18$clock)
     );
+    top$lanes$1$ctl$by_q$19 by_q$19(
+        .d(by_q$19$d),
+        .q(by_q$19$q),
+        .clock(by_q$19$clock)
+    );
+    top$lanes$1$ctl$by_q$20 by_q$20(
+        .d(by_q$20$d),
+        .q(by_q$20$q),
+        .clock(by_q$20$clock)
+    );
     top$lanes$1$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -7900,6 +8814,16 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$18$q),
         .clock(face_q$18$clock)
     );
+    top$lanes$1$ctl$face_q$19 face_q$19(
+        .d(face_q$19$d),
+        .q(face_q$19$q),
+        .clock(face_q$19$clock)
+    );
+    top$lanes$1$ctl$face_q$20 face_q$20(
+        .d(face_q$20$d),
+        .q(face_q$20$q),
+        .clock(face_q$20$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -7959,6 +8883,18 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$7$clock = clock;
         dyn_q$7$clock = clock;
         dym_q$7$clock = clock;
+        x_q$8$clock = clock;
+        sr_q$8$clock = clock;
+        dxn_q$8$clock = clock;
+        dxm_q$8$clock = clock;
+        dyn_q$8$clock = clock;
+        dym_q$8$clock = clock;
+        x_q$9$clock = clock;
+        sr_q$9$clock = clock;
+        dxn_q$9$clock = clock;
+        dxm_q$9$clock = clock;
+        dyn_q$9$clock = clock;
+        dym_q$9$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -8073,8 +9009,20 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$18$clock = clock;
         by_q$18$clock = clock;
         face_q$18$clock = clock;
-        x_q$0$d = x;
-        y_q$0$d = y;
+        v_q$19$clock = clock;
+        er_q$19$clock = clock;
+        pad_q$19$clock = clock;
+        bx_q$19$clock = clock;
+        by_q$19$clock = clock;
+        face_q$19$clock = clock;
+        v_q$20$clock = clock;
+        er_q$20$clock = clock;
+        pad_q$20$clock = clock;
+        bx_q$20$clock = clock;
+        by_q$20$clock = clock;
+        face_q$20$clock = clock;
+        x_q$0$d = x & coord_mask;
+        y_q$0$d = y & coord_mask;
         sr_q$0$d = sr;
         dxn_q$0$d = dx_neg;
         dxm_q$0$d = dx_mag;
@@ -8122,6 +9070,18 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$7$d = dxm_q$6$q;
         dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
+        x_q$8$d = x_q$7$q;
+        sr_q$8$d = sr_q$7$q;
+        dxn_q$8$d = dxn_q$7$q;
+        dxm_q$8$d = dxm_q$7$q;
+        dyn_q$8$d = dyn_q$7$q;
+        dym_q$8$d = dym_q$7$q;
+        x_q$9$d = x_q$8$q;
+        sr_q$9$d = sr_q$8$q;
+        dxn_q$9$d = dxn_q$8$q;
+        dxm_q$9$d = dxm_q$8$q;
+        dyn_q$9$d = dyn_q$8$q;
+        dym_q$9$d = dym_q$8$q;
         y_q$0$clock = clock;
         y_q$1$clock = clock;
         y_q$2$clock = clock;
@@ -8129,36 +9089,40 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         y_q$4$clock = clock;
         y_q$5$clock = clock;
         y_q$6$clock = clock;
+        y_q$7$clock = clock;
+        y_q$8$clock = clock;
         y_q$1$d = y_q$0$q;
         y_q$2$d = y_q$1$q;
         y_q$3$d = y_q$2$q;
         y_q$4$d = y_q$3$q;
         y_q$5$d = y_q$4$q;
         y_q$6$d = y_q$5$q;
-        x_t = x_q$7$q;
-        sr_t = sr_q$7$q;
-        dx_neg_t = dxn_q$7$q;
-        dx_mag_t = dxm_q$7$q;
-        dy_neg_t = dyn_q$7$q;
-        dy_mag_t = dym_q$7$q;
+        y_q$7$d = y_q$6$q;
+        y_q$8$d = y_q$7$q;
+        x_t = x_q$9$q;
+        sr_t = sr_q$9$q;
+        dx_neg_t = dxn_q$9$q;
+        dx_mag_t = dxm_q$9$q;
+        dy_neg_t = dyn_q$9$q;
+        dy_mag_t = dym_q$9$q;
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         x_out_q$d = 1'b0;
-        if (dxm_q$6$q != 'h0) begin
-            if (dxn_q$6$q) begin
-                x_out_q$d = x_q$6$q == nx_last$q;
+        if (dxm_q$8$q != 'h0) begin
+            if (dxn_q$8$q) begin
+                x_out_q$d = x_q$8$q == nx_last$q;
             end
             else begin
-                x_out_q$d = x_q$6$q == 'h0;
+                x_out_q$d = x_q$8$q == 'h0;
             end
         end
         y_out_q$d = 1'b0;
-        if (dym_q$6$q != 'h0) begin
-            if (dyn_q$6$q) begin
-                y_out_q$d = y_q$6$q == ny_last$q;
+        if (dym_q$8$q != 'h0) begin
+            if (dyn_q$8$q) begin
+                y_out_q$d = y_q$8$q == ny_last$q;
             end
             else begin
-                y_out_q$d = y_q$6$q == 'h0;
+                y_out_q$d = y_q$8$q == 'h0;
             end
         end
         x_out_t = x_out_q$q;
@@ -8166,8 +9130,8 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
-        bx_q$0$d = base_x;
-        by_q$0$d = base_y;
+        bx_q$0$d = base_x & coord_mask;
+        by_q$0$d = base_y & coord_mask;
         face_q$0$d = face;
         v_q$1$d = v_q$0$q;
         er_q$1$d = er_q$0$q;
@@ -8277,12 +9241,24 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$18$d = bx_q$17$q;
         by_q$18$d = by_q$17$q;
         face_q$18$d = face_q$17$q;
-        res_beat = v_q$18$q;
-        res_valid = v_q$18$q & ~pad_q$18$q;
-        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
-        px_x = bx_q$18$q;
-        px_y = by_q$18$q;
-        px_face = face_q$18$q;
+        v_q$19$d = v_q$18$q;
+        er_q$19$d = er_q$18$q;
+        pad_q$19$d = pad_q$18$q;
+        bx_q$19$d = bx_q$18$q;
+        by_q$19$d = by_q$18$q;
+        face_q$19$d = face_q$18$q;
+        v_q$20$d = v_q$19$q;
+        er_q$20$d = er_q$19$q;
+        pad_q$20$d = pad_q$19$q;
+        bx_q$20$d = bx_q$19$q;
+        by_q$20$d = by_q$19$q;
+        face_q$20$d = face_q$19$q;
+        res_beat = v_q$20$q;
+        res_valid = v_q$20$q & ~pad_q$20$q;
+        px_valid = v_q$20$q & er_q$20$q & ~pad_q$20$q;
+        px_x = bx_q$20$q;
+        px_y = by_q$20$q;
+        px_face = face_q$20$q;
     end
     
 endmodule // top$lanes$1$ctl
@@ -8473,6 +9449,23 @@ module top$lanes$1$ctl$bx_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$bx_q$18
+module top$lanes$1$ctl$bx_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$19
 module top$lanes$1$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -8490,6 +9483,23 @@ module top$lanes$1$ctl$bx_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$bx_q$2
+module top$lanes$1$ctl$bx_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$bx_q$20
 module top$lanes$1$ctl$bx_q$3(d,q,clock);
     
     // Module arguments
@@ -8796,6 +9806,23 @@ module top$lanes$1$ctl$by_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$by_q$18
+module top$lanes$1$ctl$by_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$19
 module top$lanes$1$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -8813,6 +9840,23 @@ module top$lanes$1$ctl$by_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$by_q$2
+module top$lanes$1$ctl$by_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$by_q$20
 module top$lanes$1$ctl$by_q$3(d,q,clock);
     
     // Module arguments
@@ -9068,6 +10112,40 @@ module top$lanes$1$ctl$dxm_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dxm_q$7
+module top$lanes$1$ctl$dxm_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$8
+module top$lanes$1$ctl$dxm_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxm_q$9
 module top$lanes$1$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
@@ -9204,6 +10282,40 @@ module top$lanes$1$ctl$dxn_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dxn_q$7
+module top$lanes$1$ctl$dxn_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$8
+module top$lanes$1$ctl$dxn_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dxn_q$9
 module top$lanes$1$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -9340,6 +10452,40 @@ module top$lanes$1$ctl$dym_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dym_q$7
+module top$lanes$1$ctl$dym_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$8
+module top$lanes$1$ctl$dym_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dym_q$9
 module top$lanes$1$ctl$dyn_q$0(d,q,clock);
     
     // Module arguments
@@ -9476,6 +10622,40 @@ module top$lanes$1$ctl$dyn_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dyn_q$7
+module top$lanes$1$ctl$dyn_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$8
+module top$lanes$1$ctl$dyn_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$dyn_q$9
 module top$lanes$1$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -9663,6 +10843,23 @@ module top$lanes$1$ctl$er_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$er_q$18
+module top$lanes$1$ctl$er_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$19
 module top$lanes$1$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -9680,6 +10877,23 @@ module top$lanes$1$ctl$er_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$er_q$2
+module top$lanes$1$ctl$er_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$er_q$20
 module top$lanes$1$ctl$er_q$3(d,q,clock);
     
     // Module arguments
@@ -9986,6 +11200,23 @@ module top$lanes$1$ctl$face_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$18
+module top$lanes$1$ctl$face_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$19
 module top$lanes$1$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -10003,6 +11234,23 @@ module top$lanes$1$ctl$face_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$face_q$2
+module top$lanes$1$ctl$face_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$face_q$20
 module top$lanes$1$ctl$face_q$3(d,q,clock);
     
     // Module arguments
@@ -10343,6 +11591,23 @@ module top$lanes$1$ctl$pad_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$18
+module top$lanes$1$ctl$pad_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$19
 module top$lanes$1$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -10360,6 +11625,23 @@ module top$lanes$1$ctl$pad_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$2
+module top$lanes$1$ctl$pad_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$pad_q$20
 module top$lanes$1$ctl$pad_q$3(d,q,clock);
     
     // Module arguments
@@ -10615,6 +11897,40 @@ module top$lanes$1$ctl$sr_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$sr_q$7
+module top$lanes$1$ctl$sr_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$8
+module top$lanes$1$ctl$sr_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$sr_q$9
 module top$lanes$1$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -10802,6 +12118,23 @@ module top$lanes$1$ctl$v_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$18
+module top$lanes$1$ctl$v_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$19
 module top$lanes$1$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -10819,6 +12152,23 @@ module top$lanes$1$ctl$v_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$2
+module top$lanes$1$ctl$v_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$v_q$20
 module top$lanes$1$ctl$v_q$3(d,q,clock);
     
     // Module arguments
@@ -11091,6 +12441,40 @@ module top$lanes$1$ctl$x_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$x_q$7
+module top$lanes$1$ctl$x_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$8
+module top$lanes$1$ctl$x_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$x_q$9
 module top$lanes$1$ctl$y_out_q(d,q,clock);
     
     // Module arguments
@@ -11227,6 +12611,40 @@ module top$lanes$1$ctl$y_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$y_q$6
+module top$lanes$1$ctl$y_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$7
+module top$lanes$1$ctl$y_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$ctl$y_q$8
 module top$lanes$1$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -11459,6 +12877,9 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
     output reg  [15:0] px_y;
     output reg  [2:0] px_face;
     
+    // Constant declarations
+    localparam  coord_mask = 16'h3ff;
+    
     // Stub signals
     reg  feed$clock;
     reg  [63:0] feed$beats;
@@ -11546,6 +12967,7 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  ctl$dy_neg;
     reg  [15:0] ctl$dy_mag;
     reg  [63:0] ctl$dims;
+    reg  [15:0] ctl$coord_mask;
     wire  [15:0] ctl$x_t;
     wire  ctl$sr_t;
     wire  ctl$dx_neg_t;
@@ -11761,6 +13183,7 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dy_neg(ctl$dy_neg),
         .dy_mag(ctl$dy_mag),
         .dims(ctl$dims),
+        .coord_mask(ctl$coord_mask),
         .x_t(ctl$x_t),
         .sr_t(ctl$sr_t),
         .dx_neg_t(ctl$dx_neg_t),
@@ -11943,6 +13366,7 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
         ctl$valid = feed$o_valid;
         ctl$er = feed$o_er;
         ctl$pad = feed$o_pad;
+        ctl$coord_mask = coord_mask;
         ctl$base_x = feed$o_base_x;
         ctl$base_y = feed$o_base_y;
         ctl$face = feed$o_face;
@@ -12167,7 +13591,7 @@ module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     end
     
 endmodule // top$lanes$2$cells
-module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -12185,6 +13609,7 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
     input wire  [63:0] dims;
+    input wire  [15:0] coord_mask;
     output reg  [15:0] x_t;
     output reg  sr_t;
     output reg  dx_neg_t;
@@ -12237,6 +13662,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] x_q$7$d;
     wire  [15:0] x_q$7$q;
     reg  x_q$7$clock;
+    reg  [15:0] x_q$8$d;
+    wire  [15:0] x_q$8$q;
+    reg  x_q$8$clock;
+    reg  [15:0] x_q$9$d;
+    wire  [15:0] x_q$9$q;
+    reg  x_q$9$clock;
     reg  [15:0] y_q$0$d;
     wire  [15:0] y_q$0$q;
     reg  y_q$0$clock;
@@ -12258,6 +13689,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] y_q$6$d;
     wire  [15:0] y_q$6$q;
     reg  y_q$6$clock;
+    reg  [15:0] y_q$7$d;
+    wire  [15:0] y_q$7$q;
+    reg  y_q$7$clock;
+    reg  [15:0] y_q$8$d;
+    wire  [15:0] y_q$8$q;
+    reg  y_q$8$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
@@ -12282,6 +13719,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  sr_q$7$d;
     wire  sr_q$7$q;
     reg  sr_q$7$clock;
+    reg  sr_q$8$d;
+    wire  sr_q$8$q;
+    reg  sr_q$8$clock;
+    reg  sr_q$9$d;
+    wire  sr_q$9$q;
+    reg  sr_q$9$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
@@ -12306,6 +13749,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dxn_q$7$d;
     wire  dxn_q$7$q;
     reg  dxn_q$7$clock;
+    reg  dxn_q$8$d;
+    wire  dxn_q$8$q;
+    reg  dxn_q$8$clock;
+    reg  dxn_q$9$d;
+    wire  dxn_q$9$q;
+    reg  dxn_q$9$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
@@ -12330,6 +13779,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] dxm_q$7$d;
     wire  [15:0] dxm_q$7$q;
     reg  dxm_q$7$clock;
+    reg  [15:0] dxm_q$8$d;
+    wire  [15:0] dxm_q$8$q;
+    reg  dxm_q$8$clock;
+    reg  [15:0] dxm_q$9$d;
+    wire  [15:0] dxm_q$9$q;
+    reg  dxm_q$9$clock;
     reg  dyn_q$0$d;
     wire  dyn_q$0$q;
     reg  dyn_q$0$clock;
@@ -12354,6 +13809,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dyn_q$7$d;
     wire  dyn_q$7$q;
     reg  dyn_q$7$clock;
+    reg  dyn_q$8$d;
+    wire  dyn_q$8$q;
+    reg  dyn_q$8$clock;
+    reg  dyn_q$9$d;
+    wire  dyn_q$9$q;
+    reg  dyn_q$9$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
@@ -12378,6 +13839,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] dym_q$7$d;
     wire  [15:0] dym_q$7$q;
     reg  dym_q$7$clock;
+    reg  [15:0] dym_q$8$d;
+    wire  [15:0] dym_q$8$q;
+    reg  dym_q$8$clock;
+    reg  [15:0] dym_q$9$d;
+    wire  [15:0] dym_q$9$q;
+    reg  dym_q$9$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -12435,6 +13902,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$18$d;
     wire  v_q$18$q;
     reg  v_q$18$clock;
+    reg  v_q$19$d;
+    wire  v_q$19$q;
+    reg  v_q$19$clock;
+    reg  v_q$20$d;
+    wire  v_q$20$q;
+    reg  v_q$20$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -12492,6 +13965,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$18$d;
     wire  er_q$18$q;
     reg  er_q$18$clock;
+    reg  er_q$19$d;
+    wire  er_q$19$q;
+    reg  er_q$19$clock;
+    reg  er_q$20$d;
+    wire  er_q$20$q;
+    reg  er_q$20$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -12549,6 +14028,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$18$d;
     wire  pad_q$18$q;
     reg  pad_q$18$clock;
+    reg  pad_q$19$d;
+    wire  pad_q$19$q;
+    reg  pad_q$19$clock;
+    reg  pad_q$20$d;
+    wire  pad_q$20$q;
+    reg  pad_q$20$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -12606,6 +14091,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$18$d;
     wire  [15:0] bx_q$18$q;
     reg  bx_q$18$clock;
+    reg  [15:0] bx_q$19$d;
+    wire  [15:0] bx_q$19$q;
+    reg  bx_q$19$clock;
+    reg  [15:0] bx_q$20$d;
+    wire  [15:0] bx_q$20$q;
+    reg  bx_q$20$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -12663,6 +14154,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$18$d;
     wire  [15:0] by_q$18$q;
     reg  by_q$18$clock;
+    reg  [15:0] by_q$19$d;
+    wire  [15:0] by_q$19$q;
+    reg  by_q$19$clock;
+    reg  [15:0] by_q$20$d;
+    wire  [15:0] by_q$20$q;
+    reg  by_q$20$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -12720,6 +14217,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$18$d;
     wire  [2:0] face_q$18$q;
     reg  face_q$18$clock;
+    reg  [2:0] face_q$19$d;
+    wire  [2:0] face_q$19$q;
+    reg  face_q$19$clock;
+    reg  [2:0] face_q$20$d;
+    wire  [2:0] face_q$20$q;
+    reg  face_q$20$clock;
     
     // Sub module instances
     top$lanes$2$ctl$nx_last nx_last(
@@ -12782,6 +14285,16 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(x_q$7$q),
         .clock(x_q$7$clock)
     );
+    top$lanes$2$ctl$x_q$8 x_q$8(
+        .d(x_q$8$d),
+        .q(x_q$8$q),
+        .clock(x_q$8$clock)
+    );
+    top$lanes$2$ctl$x_q$9 x_q$9(
+        .d(x_q$9$d),
+        .q(x_q$9$q),
+        .clock(x_q$9$clock)
+    );
     top$lanes$2$ctl$y_q$0 y_q$0(
         .d(y_q$0$d),
         .q(y_q$0$q),
@@ -12816,6 +14329,16 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$6$d),
         .q(y_q$6$q),
         .clock(y_q$6$clock)
+    );
+    top$lanes$2$ctl$y_q$7 y_q$7(
+        .d(y_q$7$d),
+        .q(y_q$7$q),
+        .clock(y_q$7$clock)
+    );
+    top$lanes$2$ctl$y_q$8 y_q$8(
+        .d(y_q$8$d),
+        .q(y_q$8$q),
+        .clock(y_q$8$clock)
     );
     top$lanes$2$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -12857,6 +14380,16 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$7$q),
         .clock(sr_q$7$clock)
     );
+    top$lanes$2$ctl$sr_q$8 sr_q$8(
+        .d(sr_q$8$d),
+        .q(sr_q$8$q),
+        .clock(sr_q$8$clock)
+    );
+    top$lanes$2$ctl$sr_q$9 sr_q$9(
+        .d(sr_q$9$d),
+        .q(sr_q$9$q),
+        .clock(sr_q$9$clock)
+    );
     top$lanes$2$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -12896,6 +14429,16 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$7$d),
         .q(dxn_q$7$q),
         .clock(dxn_q$7$clock)
+    );
+    top$lanes$2$ctl$dxn_q$8 dxn_q$8(
+        .d(dxn_q$8$d),
+        .q(dxn_q$8$q),
+        .clock(dxn_q$8$clock)
+    );
+    top$lanes$2$ctl$dxn_q$9 dxn_q$9(
+        .d(dxn_q$9$d),
+        .q(dxn_q$9$q),
+        .clock(dxn_q$9$clock)
     );
     top$lanes$2$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -12937,6 +14480,16 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dxm_q$7$q),
         .clock(dxm_q$7$clock)
     );
+    top$lanes$2$ctl$dxm_q$8 dxm_q$8(
+        .d(dxm_q$8$d),
+        .q(dxm_q$8$q),
+        .clock(dxm_q$8$clock)
+    );
+    top$lanes$2$ctl$dxm_q$9 dxm_q$9(
+        .d(dxm_q$9$d),
+        .q(dxm_q$9$q),
+        .clock(dxm_q$9$clock)
+    );
     top$lanes$2$ctl$dyn_q$0 dyn_q$0(
         .d(dyn_q$0$d),
         .q(dyn_q$0$q),
@@ -12977,6 +14530,16 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dyn_q$7$q),
         .clock(dyn_q$7$clock)
     );
+    top$lanes$2$ctl$dyn_q$8 dyn_q$8(
+        .d(dyn_q$8$d),
+        .q(dyn_q$8$q),
+        .clock(dyn_q$8$clock)
+    );
+    top$lanes$2$ctl$dyn_q$9 dyn_q$9(
+        .d(dyn_q$9$d),
+        .q(dyn_q$9$q),
+        .clock(dyn_q$9$clock)
+    );
     top$lanes$2$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
         .q(dym_q$0$q),
@@ -13016,6 +14579,16 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dym_q$7$d),
         .q(dym_q$7$q),
         .clock(dym_q$7$clock)
+    );
+    top$lanes$2$ctl$dym_q$8 dym_q$8(
+        .d(dym_q$8$d),
+        .q(dym_q$8$q),
+        .clock(dym_q$8$clock)
+    );
+    top$lanes$2$ctl$dym_q$9 dym_q$9(
+        .d(dym_q$9$d),
+        .q(dym_q$9$q),
+        .clock(dym_q$9$clock)
     );
     top$lanes$2$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -13112,6 +14685,16 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$18$q),
         .clock(v_q$18$clock)
     );
+    top$lanes$2$ctl$v_q$19 v_q$19(
+        .d(v_q$19$d),
+        .q(v_q$19$q),
+        .clock(v_q$19$clock)
+    );
+    top$lanes$2$ctl$v_q$20 v_q$20(
+        .d(v_q$20$d),
+        .q(v_q$20$q),
+        .clock(v_q$20$clock)
+    );
     top$lanes$2$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -13206,6 +14789,16 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$18$d),
         .q(er_q$18$q),
         .clock(er_q$18$clock)
+    );
+    top$lanes$2$ctl$er_q$19 er_q$19(
+        .d(er_q$19$d),
+        .q(er_q$19$q),
+        .clock(er_q$19$clock)
+    );
+    top$lanes$2$ctl$er_q$20 er_q$20(
+        .d(er_q$20$d),
+        .q(er_q$20$q),
+        .clock(er_q$20$clock)
     );
     top$lanes$2$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -13302,6 +14895,16 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$18$q),
         .clock(pad_q$18$clock)
     );
+    top$lanes$2$ctl$pad_q$19 pad_q$19(
+        .d(pad_q$19$d),
+        .q(pad_q$19$q),
+        .clock(pad_q$19$clock)
+    );
+    top$lanes$2$ctl$pad_q$20 pad_q$20(
+        .d(pad_q$20$d),
+        .q(pad_q$20$q),
+        .clock(pad_q$20$clock)
+    );
     top$lanes$2$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -13396,6 +14999,16 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$18$d),
         .q(bx_q$18$q),
         .clock(bx_q$18$clock)
+    );
+    top$lanes$2$ctl$bx_q$19 bx_q$19(
+        .d(bx_q$19$d),
+        .q(bx_q$19$q),
+        .clock(bx_q$19$clock)
+    );
+    top$lanes$2$ctl$bx_q$20 bx_q$20(
+        .d(bx_q$20$d),
+        .q(bx_q$20$q),
+        .clock(bx_q$20$clock)
     );
     top$lanes$2$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -13492,6 +15105,16 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$18$q),
         .clock(by_q$18$clock)
     );
+    top$lanes$2$ctl$by_q$19 by_q$19(
+        .d(by_q$19$d),
+        .q(by_q$19$q),
+        .clock(by_q$19$clock)
+    );
+    top$lanes$2$ctl$by_q$20 by_q$20(
+        .d(by_q$20$d),
+        .q(by_q$20$q),
+        .clock(by_q$20$clock)
+    );
     top$lanes$2$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -13587,6 +15210,16 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$18$q),
         .clock(face_q$18$clock)
     );
+    top$lanes$2$ctl$face_q$19 face_q$19(
+        .d(face_q$19$d),
+        .q(face_q$19$q),
+        .clock(face_q$19$clock)
+    );
+    top$lanes$2$ctl$face_q$20 face_q$20(
+        .d(face_q$20$d),
+        .q(face_q$20$q),
+        .clock(face_q$20$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -13646,6 +15279,18 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$7$clock = clock;
         dyn_q$7$clock = clock;
         dym_q$7$clock = clock;
+        x_q$8$clock = clock;
+        sr_q$8$clock = clock;
+        dxn_q$8$clock = clock;
+        dxm_q$8$clock = clock;
+        dyn_q$8$clock = clock;
+        dym_q$8$clock = clock;
+        x_q$9$clock = clock;
+        sr_q$9$clock = clock;
+        dxn_q$9$clock = clock;
+        dxm_q$9$clock = clock;
+        dyn_q$9$clock = clock;
+        dym_q$9$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -13760,8 +15405,20 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$18$clock = clock;
         by_q$18$clock = clock;
         face_q$18$clock = clock;
-        x_q$0$d = x;
-        y_q$0$d = y;
+        v_q$19$clock = clock;
+        er_q$19$clock = clock;
+        pad_q$19$clock = clock;
+        bx_q$19$clock = clock;
+        by_q$19$clock = clock;
+        face_q$19$clock = clock;
+        v_q$20$clock = clock;
+        er_q$20$clock = clock;
+        pad_q$20$clock = clock;
+        bx_q$20$clock = clock;
+        by_q$20$clock = clock;
+        face_q$20$clock = clock;
+        x_q$0$d = x & coord_mask;
+        y_q$0$d = y & coord_mask;
         sr_q$0$d = sr;
         dxn_q$0$d = dx_neg;
         dxm_q$0$d = dx_mag;
@@ -13809,6 +15466,18 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$7$d = dxm_q$6$q;
         dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
+        x_q$8$d = x_q$7$q;
+        sr_q$8$d = sr_q$7$q;
+        dxn_q$8$d = dxn_q$7$q;
+        dxm_q$8$d = dxm_q$7$q;
+        dyn_q$8$d = dyn_q$7$q;
+        dym_q$8$d = dym_q$7$q;
+        x_q$9$d = x_q$8$q;
+        sr_q$9$d = sr_q$8$q;
+        dxn_q$9$d = dxn_q$8$q;
+        dxm_q$9$d = dxm_q$8$q;
+        dyn_q$9$d = dyn_q$8$q;
+        dym_q$9$d = dym_q$8$q;
         y_q$0$clock = clock;
         y_q$1$clock = clock;
         y_q$2$clock = clock;
@@ -13816,36 +15485,40 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         y_q$4$clock = clock;
         y_q$5$clock = clock;
         y_q$6$clock = clock;
+        y_q$7$clock = clock;
+        y_q$8$clock = clock;
         y_q$1$d = y_q$0$q;
         y_q$2$d = y_q$1$q;
         y_q$3$d = y_q$2$q;
         y_q$4$d = y_q$3$q;
         y_q$5$d = y_q$4$q;
         y_q$6$d = y_q$5$q;
-        x_t = x_q$7$q;
-        sr_t = sr_q$7$q;
-        dx_neg_t = dxn_q$7$q;
-        dx_mag_t = dxm_q$7$q;
-        dy_neg_t = dyn_q$7$q;
-        dy_mag_t = dym_q$7$q;
+        y_q$7$d = y_q$6$q;
+        y_q$8$d = y_q$7$q;
+        x_t = x_q$9$q;
+        sr_t = sr_q$9$q;
+        dx_neg_t = dxn_q$9$q;
+        dx_mag_t = dxm_q$9$q;
+        dy_neg_t = dyn_q$9$q;
+        dy_mag_t = dym_q$9$q;
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         x_out_q$d = 1'b0;
-        if (dxm_q$6$q != 'h0) begin
-            if (dxn_q$6$q) begin
-                x_out_q$d = x_q$6$q == nx_last$q;
+        if (dxm_q$8$q != 'h0) begin
+            if (dxn_q$8$q) begin
+                x_out_q$d = x_q$8$q == nx_last$q;
             end
             else begin
-                x_out_q$d = x_q$6$q == 'h0;
+                x_out_q$d = x_q$8$q == 'h0;
             end
         end
         y_out_q$d = 1'b0;
-        if (dym_q$6$q != 'h0) begin
-            if (dyn_q$6$q) begin
-                y_out_q$d = y_q$6$q == ny_last$q;
+        if (dym_q$8$q != 'h0) begin
+            if (dyn_q$8$q) begin
+                y_out_q$d = y_q$8$q == ny_last$q;
             end
             else begin
-                y_out_q$d = y_q$6$q == 'h0;
+                y_out_q$d = y_q$8$q == 'h0;
             end
         end
         x_out_t = x_out_q$q;
@@ -13853,8 +15526,8 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
-        bx_q$0$d = base_x;
-        by_q$0$d = base_y;
+        bx_q$0$d = base_x & coord_mask;
+        by_q$0$d = base_y & coord_mask;
         face_q$0$d = face;
         v_q$1$d = v_q$0$q;
         er_q$1$d = er_q$0$q;
@@ -13964,12 +15637,24 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$18$d = bx_q$17$q;
         by_q$18$d = by_q$17$q;
         face_q$18$d = face_q$17$q;
-        res_beat = v_q$18$q;
-        res_valid = v_q$18$q & ~pad_q$18$q;
-        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
-        px_x = bx_q$18$q;
-        px_y = by_q$18$q;
-        px_face = face_q$18$q;
+        v_q$19$d = v_q$18$q;
+        er_q$19$d = er_q$18$q;
+        pad_q$19$d = pad_q$18$q;
+        bx_q$19$d = bx_q$18$q;
+        by_q$19$d = by_q$18$q;
+        face_q$19$d = face_q$18$q;
+        v_q$20$d = v_q$19$q;
+        er_q$20$d = er_q$19$q;
+        pad_q$20$d = pad_q$19$q;
+        bx_q$20$d = bx_q$19$q;
+        by_q$20$d = by_q$19$q;
+        face_q$20$d = face_q$19$q;
+        res_beat = v_q$20$q;
+        res_valid = v_q$20$q & ~pad_q$20$q;
+        px_valid = v_q$20$q & er_q$20$q & ~pad_q$20$q;
+        px_x = bx_q$20$q;
+        px_y = by_q$20$q;
+        px_face = face_q$20$q;
     end
     
 endmodule // top$lanes$2$ctl
@@ -14160,6 +15845,23 @@ module top$lanes$2$ctl$bx_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$bx_q$18
+module top$lanes$2$ctl$bx_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$19
 module top$lanes$2$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -14177,6 +15879,23 @@ module top$lanes$2$ctl$bx_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$bx_q$2
+module top$lanes$2$ctl$bx_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$bx_q$20
 module top$lanes$2$ctl$bx_q$3(d,q,clock);
     
     // Module arguments
@@ -14483,6 +16202,23 @@ module top$lanes$2$ctl$by_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$by_q$18
+module top$lanes$2$ctl$by_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$19
 module top$lanes$2$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -14500,6 +16236,23 @@ module top$lanes$2$ctl$by_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$by_q$2
+module top$lanes$2$ctl$by_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$by_q$20
 module top$lanes$2$ctl$by_q$3(d,q,clock);
     
     // Module arguments
@@ -14755,6 +16508,40 @@ module top$lanes$2$ctl$dxm_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$dxm_q$7
+module top$lanes$2$ctl$dxm_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxm_q$8
+module top$lanes$2$ctl$dxm_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxm_q$9
 module top$lanes$2$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
@@ -14891,6 +16678,40 @@ module top$lanes$2$ctl$dxn_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$dxn_q$7
+module top$lanes$2$ctl$dxn_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxn_q$8
+module top$lanes$2$ctl$dxn_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dxn_q$9
 module top$lanes$2$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -15027,6 +16848,40 @@ module top$lanes$2$ctl$dym_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$dym_q$7
+module top$lanes$2$ctl$dym_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dym_q$8
+module top$lanes$2$ctl$dym_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dym_q$9
 module top$lanes$2$ctl$dyn_q$0(d,q,clock);
     
     // Module arguments
@@ -15163,6 +17018,40 @@ module top$lanes$2$ctl$dyn_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$dyn_q$7
+module top$lanes$2$ctl$dyn_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dyn_q$8
+module top$lanes$2$ctl$dyn_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$dyn_q$9
 module top$lanes$2$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -15350,6 +17239,23 @@ module top$lanes$2$ctl$er_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$er_q$18
+module top$lanes$2$ctl$er_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$19
 module top$lanes$2$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -15367,6 +17273,23 @@ module top$lanes$2$ctl$er_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$er_q$2
+module top$lanes$2$ctl$er_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$er_q$20
 module top$lanes$2$ctl$er_q$3(d,q,clock);
     
     // Module arguments
@@ -15673,6 +17596,23 @@ module top$lanes$2$ctl$face_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$face_q$18
+module top$lanes$2$ctl$face_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$19
 module top$lanes$2$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -15690,6 +17630,23 @@ module top$lanes$2$ctl$face_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$face_q$2
+module top$lanes$2$ctl$face_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$face_q$20
 module top$lanes$2$ctl$face_q$3(d,q,clock);
     
     // Module arguments
@@ -16030,6 +17987,23 @@ module top$lanes$2$ctl$pad_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$pad_q$18
+module top$lanes$2$ctl$pad_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$19
 module top$lanes$2$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -16047,6 +18021,23 @@ module top$lanes$2$ctl$pad_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$pad_q$2
+module top$lanes$2$ctl$pad_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$pad_q$20
 module top$lanes$2$ctl$pad_q$3(d,q,clock);
     
     // Module arguments
@@ -16302,6 +18293,40 @@ module top$lanes$2$ctl$sr_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$sr_q$7
+module top$lanes$2$ctl$sr_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$sr_q$8
+module top$lanes$2$ctl$sr_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$sr_q$9
 module top$lanes$2$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -16489,6 +18514,23 @@ module top$lanes$2$ctl$v_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$v_q$18
+module top$lanes$2$ctl$v_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$19
 module top$lanes$2$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -16506,6 +18548,23 @@ module top$lanes$2$ctl$v_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$v_q$2
+module top$lanes$2$ctl$v_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$v_q$20
 module top$lanes$2$ctl$v_q$3(d,q,clock);
     
     // Module arguments
@@ -16778,6 +18837,40 @@ module top$lanes$2$ctl$x_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$x_q$7
+module top$lanes$2$ctl$x_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$x_q$8
+module top$lanes$2$ctl$x_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$x_q$9
 module top$lanes$2$ctl$y_out_q(d,q,clock);
     
     // Module arguments
@@ -16914,6 +19007,40 @@ module top$lanes$2$ctl$y_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$y_q$6
+module top$lanes$2$ctl$y_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$y_q$7
+module top$lanes$2$ctl$y_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$ctl$y_q$8
 module top$lanes$2$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -17146,6 +19273,9 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
     output reg  [15:0] px_y;
     output reg  [2:0] px_face;
     
+    // Constant declarations
+    localparam  coord_mask = 16'h3ff;
+    
     // Stub signals
     reg  feed$clock;
     reg  [63:0] feed$beats;
@@ -17233,6 +19363,7 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  ctl$dy_neg;
     reg  [15:0] ctl$dy_mag;
     reg  [63:0] ctl$dims;
+    reg  [15:0] ctl$coord_mask;
     wire  [15:0] ctl$x_t;
     wire  ctl$sr_t;
     wire  ctl$dx_neg_t;
@@ -17448,6 +19579,7 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dy_neg(ctl$dy_neg),
         .dy_mag(ctl$dy_mag),
         .dims(ctl$dims),
+        .coord_mask(ctl$coord_mask),
         .x_t(ctl$x_t),
         .sr_t(ctl$sr_t),
         .dx_neg_t(ctl$dx_neg_t),
@@ -17630,6 +19762,7 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
         ctl$valid = feed$o_valid;
         ctl$er = feed$o_er;
         ctl$pad = feed$o_pad;
+        ctl$coord_mask = coord_mask;
         ctl$base_x = feed$o_base_x;
         ctl$base_y = feed$o_base_y;
         ctl$face = feed$o_face;
@@ -17854,7 +19987,7 @@ module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     end
     
 endmodule // top$lanes$3$cells
-module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -17872,6 +20005,7 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  dy_neg;
     input wire  [15:0] dy_mag;
     input wire  [63:0] dims;
+    input wire  [15:0] coord_mask;
     output reg  [15:0] x_t;
     output reg  sr_t;
     output reg  dx_neg_t;
@@ -17924,6 +20058,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] x_q$7$d;
     wire  [15:0] x_q$7$q;
     reg  x_q$7$clock;
+    reg  [15:0] x_q$8$d;
+    wire  [15:0] x_q$8$q;
+    reg  x_q$8$clock;
+    reg  [15:0] x_q$9$d;
+    wire  [15:0] x_q$9$q;
+    reg  x_q$9$clock;
     reg  [15:0] y_q$0$d;
     wire  [15:0] y_q$0$q;
     reg  y_q$0$clock;
@@ -17945,6 +20085,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] y_q$6$d;
     wire  [15:0] y_q$6$q;
     reg  y_q$6$clock;
+    reg  [15:0] y_q$7$d;
+    wire  [15:0] y_q$7$q;
+    reg  y_q$7$clock;
+    reg  [15:0] y_q$8$d;
+    wire  [15:0] y_q$8$q;
+    reg  y_q$8$clock;
     reg  sr_q$0$d;
     wire  sr_q$0$q;
     reg  sr_q$0$clock;
@@ -17969,6 +20115,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  sr_q$7$d;
     wire  sr_q$7$q;
     reg  sr_q$7$clock;
+    reg  sr_q$8$d;
+    wire  sr_q$8$q;
+    reg  sr_q$8$clock;
+    reg  sr_q$9$d;
+    wire  sr_q$9$q;
+    reg  sr_q$9$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
@@ -17993,6 +20145,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dxn_q$7$d;
     wire  dxn_q$7$q;
     reg  dxn_q$7$clock;
+    reg  dxn_q$8$d;
+    wire  dxn_q$8$q;
+    reg  dxn_q$8$clock;
+    reg  dxn_q$9$d;
+    wire  dxn_q$9$q;
+    reg  dxn_q$9$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
@@ -18017,6 +20175,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] dxm_q$7$d;
     wire  [15:0] dxm_q$7$q;
     reg  dxm_q$7$clock;
+    reg  [15:0] dxm_q$8$d;
+    wire  [15:0] dxm_q$8$q;
+    reg  dxm_q$8$clock;
+    reg  [15:0] dxm_q$9$d;
+    wire  [15:0] dxm_q$9$q;
+    reg  dxm_q$9$clock;
     reg  dyn_q$0$d;
     wire  dyn_q$0$q;
     reg  dyn_q$0$clock;
@@ -18041,6 +20205,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dyn_q$7$d;
     wire  dyn_q$7$q;
     reg  dyn_q$7$clock;
+    reg  dyn_q$8$d;
+    wire  dyn_q$8$q;
+    reg  dyn_q$8$clock;
+    reg  dyn_q$9$d;
+    wire  dyn_q$9$q;
+    reg  dyn_q$9$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
@@ -18065,6 +20235,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] dym_q$7$d;
     wire  [15:0] dym_q$7$q;
     reg  dym_q$7$clock;
+    reg  [15:0] dym_q$8$d;
+    wire  [15:0] dym_q$8$q;
+    reg  dym_q$8$clock;
+    reg  [15:0] dym_q$9$d;
+    wire  [15:0] dym_q$9$q;
+    reg  dym_q$9$clock;
     reg  v_q$0$d;
     wire  v_q$0$q;
     reg  v_q$0$clock;
@@ -18122,6 +20298,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  v_q$18$d;
     wire  v_q$18$q;
     reg  v_q$18$clock;
+    reg  v_q$19$d;
+    wire  v_q$19$q;
+    reg  v_q$19$clock;
+    reg  v_q$20$d;
+    wire  v_q$20$q;
+    reg  v_q$20$clock;
     reg  er_q$0$d;
     wire  er_q$0$q;
     reg  er_q$0$clock;
@@ -18179,6 +20361,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  er_q$18$d;
     wire  er_q$18$q;
     reg  er_q$18$clock;
+    reg  er_q$19$d;
+    wire  er_q$19$q;
+    reg  er_q$19$clock;
+    reg  er_q$20$d;
+    wire  er_q$20$q;
+    reg  er_q$20$clock;
     reg  pad_q$0$d;
     wire  pad_q$0$q;
     reg  pad_q$0$clock;
@@ -18236,6 +20424,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  pad_q$18$d;
     wire  pad_q$18$q;
     reg  pad_q$18$clock;
+    reg  pad_q$19$d;
+    wire  pad_q$19$q;
+    reg  pad_q$19$clock;
+    reg  pad_q$20$d;
+    wire  pad_q$20$q;
+    reg  pad_q$20$clock;
     reg  [15:0] bx_q$0$d;
     wire  [15:0] bx_q$0$q;
     reg  bx_q$0$clock;
@@ -18293,6 +20487,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] bx_q$18$d;
     wire  [15:0] bx_q$18$q;
     reg  bx_q$18$clock;
+    reg  [15:0] bx_q$19$d;
+    wire  [15:0] bx_q$19$q;
+    reg  bx_q$19$clock;
+    reg  [15:0] bx_q$20$d;
+    wire  [15:0] bx_q$20$q;
+    reg  bx_q$20$clock;
     reg  [15:0] by_q$0$d;
     wire  [15:0] by_q$0$q;
     reg  by_q$0$clock;
@@ -18350,6 +20550,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] by_q$18$d;
     wire  [15:0] by_q$18$q;
     reg  by_q$18$clock;
+    reg  [15:0] by_q$19$d;
+    wire  [15:0] by_q$19$q;
+    reg  by_q$19$clock;
+    reg  [15:0] by_q$20$d;
+    wire  [15:0] by_q$20$q;
+    reg  by_q$20$clock;
     reg  [2:0] face_q$0$d;
     wire  [2:0] face_q$0$q;
     reg  face_q$0$clock;
@@ -18407,6 +20613,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [2:0] face_q$18$d;
     wire  [2:0] face_q$18$q;
     reg  face_q$18$clock;
+    reg  [2:0] face_q$19$d;
+    wire  [2:0] face_q$19$q;
+    reg  face_q$19$clock;
+    reg  [2:0] face_q$20$d;
+    wire  [2:0] face_q$20$q;
+    reg  face_q$20$clock;
     
     // Sub module instances
     top$lanes$3$ctl$nx_last nx_last(
@@ -18469,6 +20681,16 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(x_q$7$q),
         .clock(x_q$7$clock)
     );
+    top$lanes$3$ctl$x_q$8 x_q$8(
+        .d(x_q$8$d),
+        .q(x_q$8$q),
+        .clock(x_q$8$clock)
+    );
+    top$lanes$3$ctl$x_q$9 x_q$9(
+        .d(x_q$9$d),
+        .q(x_q$9$q),
+        .clock(x_q$9$clock)
+    );
     top$lanes$3$ctl$y_q$0 y_q$0(
         .d(y_q$0$d),
         .q(y_q$0$q),
@@ -18503,6 +20725,16 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(y_q$6$d),
         .q(y_q$6$q),
         .clock(y_q$6$clock)
+    );
+    top$lanes$3$ctl$y_q$7 y_q$7(
+        .d(y_q$7$d),
+        .q(y_q$7$q),
+        .clock(y_q$7$clock)
+    );
+    top$lanes$3$ctl$y_q$8 y_q$8(
+        .d(y_q$8$d),
+        .q(y_q$8$q),
+        .clock(y_q$8$clock)
     );
     top$lanes$3$ctl$sr_q$0 sr_q$0(
         .d(sr_q$0$d),
@@ -18544,6 +20776,16 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$7$q),
         .clock(sr_q$7$clock)
     );
+    top$lanes$3$ctl$sr_q$8 sr_q$8(
+        .d(sr_q$8$d),
+        .q(sr_q$8$q),
+        .clock(sr_q$8$clock)
+    );
+    top$lanes$3$ctl$sr_q$9 sr_q$9(
+        .d(sr_q$9$d),
+        .q(sr_q$9$q),
+        .clock(sr_q$9$clock)
+    );
     top$lanes$3$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -18583,6 +20825,16 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$7$d),
         .q(dxn_q$7$q),
         .clock(dxn_q$7$clock)
+    );
+    top$lanes$3$ctl$dxn_q$8 dxn_q$8(
+        .d(dxn_q$8$d),
+        .q(dxn_q$8$q),
+        .clock(dxn_q$8$clock)
+    );
+    top$lanes$3$ctl$dxn_q$9 dxn_q$9(
+        .d(dxn_q$9$d),
+        .q(dxn_q$9$q),
+        .clock(dxn_q$9$clock)
     );
     top$lanes$3$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -18624,6 +20876,16 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dxm_q$7$q),
         .clock(dxm_q$7$clock)
     );
+    top$lanes$3$ctl$dxm_q$8 dxm_q$8(
+        .d(dxm_q$8$d),
+        .q(dxm_q$8$q),
+        .clock(dxm_q$8$clock)
+    );
+    top$lanes$3$ctl$dxm_q$9 dxm_q$9(
+        .d(dxm_q$9$d),
+        .q(dxm_q$9$q),
+        .clock(dxm_q$9$clock)
+    );
     top$lanes$3$ctl$dyn_q$0 dyn_q$0(
         .d(dyn_q$0$d),
         .q(dyn_q$0$q),
@@ -18664,6 +20926,16 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(dyn_q$7$q),
         .clock(dyn_q$7$clock)
     );
+    top$lanes$3$ctl$dyn_q$8 dyn_q$8(
+        .d(dyn_q$8$d),
+        .q(dyn_q$8$q),
+        .clock(dyn_q$8$clock)
+    );
+    top$lanes$3$ctl$dyn_q$9 dyn_q$9(
+        .d(dyn_q$9$d),
+        .q(dyn_q$9$q),
+        .clock(dyn_q$9$clock)
+    );
     top$lanes$3$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
         .q(dym_q$0$q),
@@ -18703,6 +20975,16 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dym_q$7$d),
         .q(dym_q$7$q),
         .clock(dym_q$7$clock)
+    );
+    top$lanes$3$ctl$dym_q$8 dym_q$8(
+        .d(dym_q$8$d),
+        .q(dym_q$8$q),
+        .clock(dym_q$8$clock)
+    );
+    top$lanes$3$ctl$dym_q$9 dym_q$9(
+        .d(dym_q$9$d),
+        .q(dym_q$9$q),
+        .clock(dym_q$9$clock)
     );
     top$lanes$3$ctl$v_q$0 v_q$0(
         .d(v_q$0$d),
@@ -18799,6 +21081,16 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(v_q$18$q),
         .clock(v_q$18$clock)
     );
+    top$lanes$3$ctl$v_q$19 v_q$19(
+        .d(v_q$19$d),
+        .q(v_q$19$q),
+        .clock(v_q$19$clock)
+    );
+    top$lanes$3$ctl$v_q$20 v_q$20(
+        .d(v_q$20$d),
+        .q(v_q$20$q),
+        .clock(v_q$20$clock)
+    );
     top$lanes$3$ctl$er_q$0 er_q$0(
         .d(er_q$0$d),
         .q(er_q$0$q),
@@ -18893,6 +21185,16 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(er_q$18$d),
         .q(er_q$18$q),
         .clock(er_q$18$clock)
+    );
+    top$lanes$3$ctl$er_q$19 er_q$19(
+        .d(er_q$19$d),
+        .q(er_q$19$q),
+        .clock(er_q$19$clock)
+    );
+    top$lanes$3$ctl$er_q$20 er_q$20(
+        .d(er_q$20$d),
+        .q(er_q$20$q),
+        .clock(er_q$20$clock)
     );
     top$lanes$3$ctl$pad_q$0 pad_q$0(
         .d(pad_q$0$d),
@@ -18989,6 +21291,16 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(pad_q$18$q),
         .clock(pad_q$18$clock)
     );
+    top$lanes$3$ctl$pad_q$19 pad_q$19(
+        .d(pad_q$19$d),
+        .q(pad_q$19$q),
+        .clock(pad_q$19$clock)
+    );
+    top$lanes$3$ctl$pad_q$20 pad_q$20(
+        .d(pad_q$20$d),
+        .q(pad_q$20$q),
+        .clock(pad_q$20$clock)
+    );
     top$lanes$3$ctl$bx_q$0 bx_q$0(
         .d(bx_q$0$d),
         .q(bx_q$0$q),
@@ -19083,6 +21395,16 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(bx_q$18$d),
         .q(bx_q$18$q),
         .clock(bx_q$18$clock)
+    );
+    top$lanes$3$ctl$bx_q$19 bx_q$19(
+        .d(bx_q$19$d),
+        .q(bx_q$19$q),
+        .clock(bx_q$19$clock)
+    );
+    top$lanes$3$ctl$bx_q$20 bx_q$20(
+        .d(bx_q$20$d),
+        .q(bx_q$20$q),
+        .clock(bx_q$20$clock)
     );
     top$lanes$3$ctl$by_q$0 by_q$0(
         .d(by_q$0$d),
@@ -19179,6 +21501,16 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(by_q$18$q),
         .clock(by_q$18$clock)
     );
+    top$lanes$3$ctl$by_q$19 by_q$19(
+        .d(by_q$19$d),
+        .q(by_q$19$q),
+        .clock(by_q$19$clock)
+    );
+    top$lanes$3$ctl$by_q$20 by_q$20(
+        .d(by_q$20$d),
+        .q(by_q$20$q),
+        .clock(by_q$20$clock)
+    );
     top$lanes$3$ctl$face_q$0 face_q$0(
         .d(face_q$0$d),
         .q(face_q$0$q),
@@ -19274,6 +21606,16 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(face_q$18$q),
         .clock(face_q$18$clock)
     );
+    top$lanes$3$ctl$face_q$19 face_q$19(
+        .d(face_q$19$d),
+        .q(face_q$19$q),
+        .clock(face_q$19$clock)
+    );
+    top$lanes$3$ctl$face_q$20 face_q$20(
+        .d(face_q$20$d),
+        .q(face_q$20$q),
+        .clock(face_q$20$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -19333,6 +21675,18 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$7$clock = clock;
         dyn_q$7$clock = clock;
         dym_q$7$clock = clock;
+        x_q$8$clock = clock;
+        sr_q$8$clock = clock;
+        dxn_q$8$clock = clock;
+        dxm_q$8$clock = clock;
+        dyn_q$8$clock = clock;
+        dym_q$8$clock = clock;
+        x_q$9$clock = clock;
+        sr_q$9$clock = clock;
+        dxn_q$9$clock = clock;
+        dxm_q$9$clock = clock;
+        dyn_q$9$clock = clock;
+        dym_q$9$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
         pad_q$0$clock = clock;
@@ -19447,8 +21801,20 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$18$clock = clock;
         by_q$18$clock = clock;
         face_q$18$clock = clock;
-        x_q$0$d = x;
-        y_q$0$d = y;
+        v_q$19$clock = clock;
+        er_q$19$clock = clock;
+        pad_q$19$clock = clock;
+        bx_q$19$clock = clock;
+        by_q$19$clock = clock;
+        face_q$19$clock = clock;
+        v_q$20$clock = clock;
+        er_q$20$clock = clock;
+        pad_q$20$clock = clock;
+        bx_q$20$clock = clock;
+        by_q$20$clock = clock;
+        face_q$20$clock = clock;
+        x_q$0$d = x & coord_mask;
+        y_q$0$d = y & coord_mask;
         sr_q$0$d = sr;
         dxn_q$0$d = dx_neg;
         dxm_q$0$d = dx_mag;
@@ -19496,6 +21862,18 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dxm_q$7$d = dxm_q$6$q;
         dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
+        x_q$8$d = x_q$7$q;
+        sr_q$8$d = sr_q$7$q;
+        dxn_q$8$d = dxn_q$7$q;
+        dxm_q$8$d = dxm_q$7$q;
+        dyn_q$8$d = dyn_q$7$q;
+        dym_q$8$d = dym_q$7$q;
+        x_q$9$d = x_q$8$q;
+        sr_q$9$d = sr_q$8$q;
+        dxn_q$9$d = dxn_q$8$q;
+        dxm_q$9$d = dxm_q$8$q;
+        dyn_q$9$d = dyn_q$8$q;
+        dym_q$9$d = dym_q$8$q;
         y_q$0$clock = clock;
         y_q$1$clock = clock;
         y_q$2$clock = clock;
@@ -19503,36 +21881,40 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         y_q$4$clock = clock;
         y_q$5$clock = clock;
         y_q$6$clock = clock;
+        y_q$7$clock = clock;
+        y_q$8$clock = clock;
         y_q$1$d = y_q$0$q;
         y_q$2$d = y_q$1$q;
         y_q$3$d = y_q$2$q;
         y_q$4$d = y_q$3$q;
         y_q$5$d = y_q$4$q;
         y_q$6$d = y_q$5$q;
-        x_t = x_q$7$q;
-        sr_t = sr_q$7$q;
-        dx_neg_t = dxn_q$7$q;
-        dx_mag_t = dxm_q$7$q;
-        dy_neg_t = dyn_q$7$q;
-        dy_mag_t = dym_q$7$q;
+        y_q$7$d = y_q$6$q;
+        y_q$8$d = y_q$7$q;
+        x_t = x_q$9$q;
+        sr_t = sr_q$9$q;
+        dx_neg_t = dxn_q$9$q;
+        dx_mag_t = dxm_q$9$q;
+        dy_neg_t = dyn_q$9$q;
+        dy_mag_t = dym_q$9$q;
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         x_out_q$d = 1'b0;
-        if (dxm_q$6$q != 'h0) begin
-            if (dxn_q$6$q) begin
-                x_out_q$d = x_q$6$q == nx_last$q;
+        if (dxm_q$8$q != 'h0) begin
+            if (dxn_q$8$q) begin
+                x_out_q$d = x_q$8$q == nx_last$q;
             end
             else begin
-                x_out_q$d = x_q$6$q == 'h0;
+                x_out_q$d = x_q$8$q == 'h0;
             end
         end
         y_out_q$d = 1'b0;
-        if (dym_q$6$q != 'h0) begin
-            if (dyn_q$6$q) begin
-                y_out_q$d = y_q$6$q == ny_last$q;
+        if (dym_q$8$q != 'h0) begin
+            if (dyn_q$8$q) begin
+                y_out_q$d = y_q$8$q == ny_last$q;
             end
             else begin
-                y_out_q$d = y_q$6$q == 'h0;
+                y_out_q$d = y_q$8$q == 'h0;
             end
         end
         x_out_t = x_out_q$q;
@@ -19540,8 +21922,8 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
-        bx_q$0$d = base_x;
-        by_q$0$d = base_y;
+        bx_q$0$d = base_x & coord_mask;
+        by_q$0$d = base_y & coord_mask;
         face_q$0$d = face;
         v_q$1$d = v_q$0$q;
         er_q$1$d = er_q$0$q;
@@ -19651,12 +22033,24 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         bx_q$18$d = bx_q$17$q;
         by_q$18$d = by_q$17$q;
         face_q$18$d = face_q$17$q;
-        res_beat = v_q$18$q;
-        res_valid = v_q$18$q & ~pad_q$18$q;
-        px_valid = v_q$18$q & er_q$18$q & ~pad_q$18$q;
-        px_x = bx_q$18$q;
-        px_y = by_q$18$q;
-        px_face = face_q$18$q;
+        v_q$19$d = v_q$18$q;
+        er_q$19$d = er_q$18$q;
+        pad_q$19$d = pad_q$18$q;
+        bx_q$19$d = bx_q$18$q;
+        by_q$19$d = by_q$18$q;
+        face_q$19$d = face_q$18$q;
+        v_q$20$d = v_q$19$q;
+        er_q$20$d = er_q$19$q;
+        pad_q$20$d = pad_q$19$q;
+        bx_q$20$d = bx_q$19$q;
+        by_q$20$d = by_q$19$q;
+        face_q$20$d = face_q$19$q;
+        res_beat = v_q$20$q;
+        res_valid = v_q$20$q & ~pad_q$20$q;
+        px_valid = v_q$20$q & er_q$20$q & ~pad_q$20$q;
+        px_x = bx_q$20$q;
+        px_y = by_q$20$q;
+        px_face = face_q$20$q;
     end
     
 endmodule // top$lanes$3$ctl
@@ -19847,6 +22241,23 @@ module top$lanes$3$ctl$bx_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$bx_q$18
+module top$lanes$3$ctl$bx_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$19
 module top$lanes$3$ctl$bx_q$2(d,q,clock);
     
     // Module arguments
@@ -19864,6 +22275,23 @@ module top$lanes$3$ctl$bx_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$bx_q$2
+module top$lanes$3$ctl$bx_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$bx_q$20
 module top$lanes$3$ctl$bx_q$3(d,q,clock);
     
     // Module arguments
@@ -20170,6 +22598,23 @@ module top$lanes$3$ctl$by_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$by_q$18
+module top$lanes$3$ctl$by_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$19
 module top$lanes$3$ctl$by_q$2(d,q,clock);
     
     // Module arguments
@@ -20187,6 +22632,23 @@ module top$lanes$3$ctl$by_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$by_q$2
+module top$lanes$3$ctl$by_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$by_q$20
 module top$lanes$3$ctl$by_q$3(d,q,clock);
     
     // Module arguments
@@ -20442,6 +22904,40 @@ module top$lanes$3$ctl$dxm_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$dxm_q$7
+module top$lanes$3$ctl$dxm_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxm_q$8
+module top$lanes$3$ctl$dxm_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxm_q$9
 module top$lanes$3$ctl$dxn_q$0(d,q,clock);
     
     // Module arguments
@@ -20578,6 +23074,40 @@ module top$lanes$3$ctl$dxn_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$dxn_q$7
+module top$lanes$3$ctl$dxn_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxn_q$8
+module top$lanes$3$ctl$dxn_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dxn_q$9
 module top$lanes$3$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -20714,6 +23244,40 @@ module top$lanes$3$ctl$dym_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$dym_q$7
+module top$lanes$3$ctl$dym_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dym_q$8
+module top$lanes$3$ctl$dym_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dym_q$9
 module top$lanes$3$ctl$dyn_q$0(d,q,clock);
     
     // Module arguments
@@ -20850,6 +23414,40 @@ module top$lanes$3$ctl$dyn_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$dyn_q$7
+module top$lanes$3$ctl$dyn_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dyn_q$8
+module top$lanes$3$ctl$dyn_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$dyn_q$9
 module top$lanes$3$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -21037,6 +23635,23 @@ module top$lanes$3$ctl$er_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$er_q$18
+module top$lanes$3$ctl$er_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$19
 module top$lanes$3$ctl$er_q$2(d,q,clock);
     
     // Module arguments
@@ -21054,6 +23669,23 @@ module top$lanes$3$ctl$er_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$er_q$2
+module top$lanes$3$ctl$er_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$er_q$20
 module top$lanes$3$ctl$er_q$3(d,q,clock);
     
     // Module arguments
@@ -21360,6 +23992,23 @@ module top$lanes$3$ctl$face_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$face_q$18
+module top$lanes$3$ctl$face_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$19
 module top$lanes$3$ctl$face_q$2(d,q,clock);
     
     // Module arguments
@@ -21377,6 +24026,23 @@ module top$lanes$3$ctl$face_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$face_q$2
+module top$lanes$3$ctl$face_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$face_q$20
 module top$lanes$3$ctl$face_q$3(d,q,clock);
     
     // Module arguments
@@ -21717,6 +24383,23 @@ module top$lanes$3$ctl$pad_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$pad_q$18
+module top$lanes$3$ctl$pad_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$19
 module top$lanes$3$ctl$pad_q$2(d,q,clock);
     
     // Module arguments
@@ -21734,6 +24417,23 @@ module top$lanes$3$ctl$pad_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$pad_q$2
+module top$lanes$3$ctl$pad_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$pad_q$20
 module top$lanes$3$ctl$pad_q$3(d,q,clock);
     
     // Module arguments
@@ -21989,6 +24689,40 @@ module top$lanes$3$ctl$sr_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$sr_q$7
+module top$lanes$3$ctl$sr_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$sr_q$8
+module top$lanes$3$ctl$sr_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$sr_q$9
 module top$lanes$3$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -22176,6 +24910,23 @@ module top$lanes$3$ctl$v_q$18(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$v_q$18
+module top$lanes$3$ctl$v_q$19(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$19
 module top$lanes$3$ctl$v_q$2(d,q,clock);
     
     // Module arguments
@@ -22193,6 +24944,23 @@ module top$lanes$3$ctl$v_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$v_q$2
+module top$lanes$3$ctl$v_q$20(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$v_q$20
 module top$lanes$3$ctl$v_q$3(d,q,clock);
     
     // Module arguments
@@ -22465,6 +25233,40 @@ module top$lanes$3$ctl$x_q$7(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$x_q$7
+module top$lanes$3$ctl$x_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$x_q$8
+module top$lanes$3$ctl$x_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$x_q$9
 module top$lanes$3$ctl$y_out_q(d,q,clock);
     
     // Module arguments
@@ -22601,6 +25403,40 @@ module top$lanes$3$ctl$y_q$6(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$y_q$6
+module top$lanes$3$ctl$y_q$7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$y_q$7
+module top$lanes$3$ctl$y_q$8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$ctl$y_q$8
 module top$lanes$3$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,base_x,base_y,face,at_edge,dx_neg,dx_mag,dy_neg,dy_mag,g_from_left_xm,g_from_left_ym,g_from_left_zm,g_from_right_xp,g_from_right_yp,g_from_right_zp,g_to_right_xm,g_to_right_ym,g_to_right_zm,g_to_left_xp,g_to_left_yp,g_to_left_zp,o_valid,o_value,o_x,o_y,o_pad,o_invalid,o_sr,o_er,o_edge,o_face,o_base_x,o_base_y,o_dx_neg,o_dx_mag,o_dy_neg,o_dy_mag,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments

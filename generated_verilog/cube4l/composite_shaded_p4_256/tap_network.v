@@ -962,7 +962,6 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -978,12 +977,15 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -998,7 +1000,6 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1016,15 +1017,20 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$0$taps$rows$beam0$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$0$taps$rows$beam0$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$0$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$0$taps$rows$beam0$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$0$taps$rows$beam0$one one(
         .d(one$d),
@@ -1051,15 +1057,17 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -1069,17 +1077,17 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1116,6 +1124,23 @@ module top$lanes$0$taps$rows$beam0$bound(d,q,clock);
     end
           
 endmodule // top$lanes$0$taps$rows$beam0$bound
+module top$lanes$0$taps$rows$beam0$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$head
 module top$lanes$0$taps$rows$beam0$is_one(d,q,clock);
     
     // Module arguments
@@ -1217,7 +1242,7 @@ module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$0$taps$rows$beam0$ram
-module top$lanes$0$taps$rows$beam0$rd_flipped(d,q,clock);
+module top$lanes$0$taps$rows$beam0$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1233,7 +1258,7 @@ module top$lanes$0$taps$rows$beam0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam0$rd_flipped
+endmodule // top$lanes$0$taps$rows$beam0$rd
 module top$lanes$0$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
@@ -1261,7 +1286,6 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -1277,12 +1301,15 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -1297,7 +1324,6 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1315,15 +1341,20 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$0$taps$rows$beam1$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$0$taps$rows$beam1$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$0$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$0$taps$rows$beam1$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$0$taps$rows$beam1$one one(
         .d(one$d),
@@ -1350,15 +1381,17 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -1368,17 +1401,17 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1415,6 +1448,23 @@ module top$lanes$0$taps$rows$beam1$bound(d,q,clock);
     end
           
 endmodule // top$lanes$0$taps$rows$beam1$bound
+module top$lanes$0$taps$rows$beam1$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$head
 module top$lanes$0$taps$rows$beam1$is_one(d,q,clock);
     
     // Module arguments
@@ -1516,7 +1566,7 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$0$taps$rows$beam1$ram
-module top$lanes$0$taps$rows$beam1$rd_flipped(d,q,clock);
+module top$lanes$0$taps$rows$beam1$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1532,7 +1582,7 @@ module top$lanes$0$taps$rows$beam1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$beam1$rd_flipped
+endmodule // top$lanes$0$taps$rows$beam1$rd
 module top$lanes$0$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
@@ -1577,7 +1627,6 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3faf;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -1593,12 +1642,15 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -1613,7 +1665,6 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -1631,15 +1682,20 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$0$taps$rows$ring$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$0$taps$rows$ring$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$0$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$0$taps$rows$ring$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$0$taps$rows$ring$one one(
         .d(one$d),
@@ -1666,15 +1722,17 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -1684,17 +1742,17 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -1731,6 +1789,23 @@ module top$lanes$0$taps$rows$ring$bound(d,q,clock);
     end
           
 endmodule // top$lanes$0$taps$rows$ring$bound
+module top$lanes$0$taps$rows$ring$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$head
 module top$lanes$0$taps$rows$ring$is_one(d,q,clock);
     
     // Module arguments
@@ -1924,7 +1999,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$0$taps$rows$ring$ram
-module top$lanes$0$taps$rows$ring$rd_flipped(d,q,clock);
+module top$lanes$0$taps$rows$ring$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1940,7 +2015,7 @@ module top$lanes$0$taps$rows$ring$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$0$taps$rows$ring$rd_flipped
+endmodule // top$lanes$0$taps$rows$ring$rd
 module top$lanes$0$taps$rows$ring$short(d,q,clock);
     
     // Module arguments
@@ -4044,7 +4119,6 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -4060,12 +4134,15 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -4080,7 +4157,6 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -4098,15 +4174,20 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$1$taps$rows$beam0$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$1$taps$rows$beam0$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$1$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$1$taps$rows$beam0$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$1$taps$rows$beam0$one one(
         .d(one$d),
@@ -4133,15 +4214,17 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -4151,17 +4234,17 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -4198,6 +4281,23 @@ module top$lanes$1$taps$rows$beam0$bound(d,q,clock);
     end
           
 endmodule // top$lanes$1$taps$rows$beam0$bound
+module top$lanes$1$taps$rows$beam0$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$head
 module top$lanes$1$taps$rows$beam0$is_one(d,q,clock);
     
     // Module arguments
@@ -4299,7 +4399,7 @@ module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$1$taps$rows$beam0$ram
-module top$lanes$1$taps$rows$beam0$rd_flipped(d,q,clock);
+module top$lanes$1$taps$rows$beam0$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4315,7 +4415,7 @@ module top$lanes$1$taps$rows$beam0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam0$rd_flipped
+endmodule // top$lanes$1$taps$rows$beam0$rd
 module top$lanes$1$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
@@ -4343,7 +4443,6 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -4359,12 +4458,15 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -4379,7 +4481,6 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -4397,15 +4498,20 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$1$taps$rows$beam1$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$1$taps$rows$beam1$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$1$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$1$taps$rows$beam1$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$1$taps$rows$beam1$one one(
         .d(one$d),
@@ -4432,15 +4538,17 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -4450,17 +4558,17 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -4497,6 +4605,23 @@ module top$lanes$1$taps$rows$beam1$bound(d,q,clock);
     end
           
 endmodule // top$lanes$1$taps$rows$beam1$bound
+module top$lanes$1$taps$rows$beam1$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$head
 module top$lanes$1$taps$rows$beam1$is_one(d,q,clock);
     
     // Module arguments
@@ -4598,7 +4723,7 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$1$taps$rows$beam1$ram
-module top$lanes$1$taps$rows$beam1$rd_flipped(d,q,clock);
+module top$lanes$1$taps$rows$beam1$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4614,7 +4739,7 @@ module top$lanes$1$taps$rows$beam1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$beam1$rd_flipped
+endmodule // top$lanes$1$taps$rows$beam1$rd
 module top$lanes$1$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
@@ -4659,7 +4784,6 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3faf;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -4675,12 +4799,15 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -4695,7 +4822,6 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -4713,15 +4839,20 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$1$taps$rows$ring$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$1$taps$rows$ring$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$1$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$1$taps$rows$ring$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$1$taps$rows$ring$one one(
         .d(one$d),
@@ -4748,15 +4879,17 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -4766,17 +4899,17 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -4813,6 +4946,23 @@ module top$lanes$1$taps$rows$ring$bound(d,q,clock);
     end
           
 endmodule // top$lanes$1$taps$rows$ring$bound
+module top$lanes$1$taps$rows$ring$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$head
 module top$lanes$1$taps$rows$ring$is_one(d,q,clock);
     
     // Module arguments
@@ -5006,7 +5156,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$1$taps$rows$ring$ram
-module top$lanes$1$taps$rows$ring$rd_flipped(d,q,clock);
+module top$lanes$1$taps$rows$ring$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -5022,7 +5172,7 @@ module top$lanes$1$taps$rows$ring$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$1$taps$rows$ring$rd_flipped
+endmodule // top$lanes$1$taps$rows$ring$rd
 module top$lanes$1$taps$rows$ring$short(d,q,clock);
     
     // Module arguments
@@ -7126,7 +7276,6 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -7142,12 +7291,15 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -7162,7 +7314,6 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -7180,15 +7331,20 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$2$taps$rows$beam0$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$2$taps$rows$beam0$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$2$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$2$taps$rows$beam0$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$2$taps$rows$beam0$one one(
         .d(one$d),
@@ -7215,15 +7371,17 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -7233,17 +7391,17 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -7280,6 +7438,23 @@ module top$lanes$2$taps$rows$beam0$bound(d,q,clock);
     end
           
 endmodule // top$lanes$2$taps$rows$beam0$bound
+module top$lanes$2$taps$rows$beam0$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam0$head
 module top$lanes$2$taps$rows$beam0$is_one(d,q,clock);
     
     // Module arguments
@@ -7381,7 +7556,7 @@ module top$lanes$2$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$2$taps$rows$beam0$ram
-module top$lanes$2$taps$rows$beam0$rd_flipped(d,q,clock);
+module top$lanes$2$taps$rows$beam0$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7397,7 +7572,7 @@ module top$lanes$2$taps$rows$beam0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam0$rd_flipped
+endmodule // top$lanes$2$taps$rows$beam0$rd
 module top$lanes$2$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
@@ -7425,7 +7600,6 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -7441,12 +7615,15 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -7461,7 +7638,6 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -7479,15 +7655,20 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$2$taps$rows$beam1$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$2$taps$rows$beam1$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$2$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$2$taps$rows$beam1$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$2$taps$rows$beam1$one one(
         .d(one$d),
@@ -7514,15 +7695,17 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -7532,17 +7715,17 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -7579,6 +7762,23 @@ module top$lanes$2$taps$rows$beam1$bound(d,q,clock);
     end
           
 endmodule // top$lanes$2$taps$rows$beam1$bound
+module top$lanes$2$taps$rows$beam1$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam1$head
 module top$lanes$2$taps$rows$beam1$is_one(d,q,clock);
     
     // Module arguments
@@ -7680,7 +7880,7 @@ module top$lanes$2$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$2$taps$rows$beam1$ram
-module top$lanes$2$taps$rows$beam1$rd_flipped(d,q,clock);
+module top$lanes$2$taps$rows$beam1$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -7696,7 +7896,7 @@ module top$lanes$2$taps$rows$beam1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$beam1$rd_flipped
+endmodule // top$lanes$2$taps$rows$beam1$rd
 module top$lanes$2$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
@@ -7741,7 +7941,6 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3faf;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -7757,12 +7956,15 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -7777,7 +7979,6 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -7795,15 +7996,20 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$2$taps$rows$ring$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$2$taps$rows$ring$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$2$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$2$taps$rows$ring$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$2$taps$rows$ring$one one(
         .d(one$d),
@@ -7830,15 +8036,17 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -7848,17 +8056,17 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -7895,6 +8103,23 @@ module top$lanes$2$taps$rows$ring$bound(d,q,clock);
     end
           
 endmodule // top$lanes$2$taps$rows$ring$bound
+module top$lanes$2$taps$rows$ring$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$ring$head
 module top$lanes$2$taps$rows$ring$is_one(d,q,clock);
     
     // Module arguments
@@ -8088,7 +8313,7 @@ module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$2$taps$rows$ring$ram
-module top$lanes$2$taps$rows$ring$rd_flipped(d,q,clock);
+module top$lanes$2$taps$rows$ring$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -8104,7 +8329,7 @@ module top$lanes$2$taps$rows$ring$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$2$taps$rows$ring$rd_flipped
+endmodule // top$lanes$2$taps$rows$ring$rd
 module top$lanes$2$taps$rows$ring$short(d,q,clock);
     
     // Module arguments
@@ -10208,7 +10433,6 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -10224,12 +10448,15 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -10244,7 +10471,6 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -10262,15 +10488,20 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$3$taps$rows$beam0$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$3$taps$rows$beam0$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$3$taps$rows$beam0$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$3$taps$rows$beam0$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$3$taps$rows$beam0$one one(
         .d(one$d),
@@ -10297,15 +10528,17 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -10315,17 +10548,17 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -10362,6 +10595,23 @@ module top$lanes$3$taps$rows$beam0$bound(d,q,clock);
     end
           
 endmodule // top$lanes$3$taps$rows$beam0$bound
+module top$lanes$3$taps$rows$beam0$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam0$head
 module top$lanes$3$taps$rows$beam0$is_one(d,q,clock);
     
     // Module arguments
@@ -10463,7 +10713,7 @@ module top$lanes$3$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$3$taps$rows$beam0$ram
-module top$lanes$3$taps$rows$beam0$rd_flipped(d,q,clock);
+module top$lanes$3$taps$rows$beam0$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10479,7 +10729,7 @@ module top$lanes$3$taps$rows$beam0$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam0$rd_flipped
+endmodule // top$lanes$3$taps$rows$beam0$rd
 module top$lanes$3$taps$rows$beam0$short(d,q,clock);
     
     // Module arguments
@@ -10507,7 +10757,6 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3e;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -10523,12 +10772,15 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -10543,7 +10795,6 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -10561,15 +10812,20 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$3$taps$rows$beam1$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$3$taps$rows$beam1$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$3$taps$rows$beam1$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$3$taps$rows$beam1$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$3$taps$rows$beam1$one one(
         .d(one$d),
@@ -10596,15 +10852,17 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -10614,17 +10872,17 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -10661,6 +10919,23 @@ module top$lanes$3$taps$rows$beam1$bound(d,q,clock);
     end
           
 endmodule // top$lanes$3$taps$rows$beam1$bound
+module top$lanes$3$taps$rows$beam1$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam1$head
 module top$lanes$3$taps$rows$beam1$is_one(d,q,clock);
     
     // Module arguments
@@ -10762,7 +11037,7 @@ module top$lanes$3$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$3$taps$rows$beam1$ram
-module top$lanes$3$taps$rows$beam1$rd_flipped(d,q,clock);
+module top$lanes$3$taps$rows$beam1$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10778,7 +11053,7 @@ module top$lanes$3$taps$rows$beam1$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$beam1$rd_flipped
+endmodule // top$lanes$3$taps$rows$beam1$rd
 module top$lanes$3$taps$rows$beam1$short(d,q,clock);
     
     // Module arguments
@@ -10823,7 +11098,6 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  flip = 16'h1;
     localparam  longest_last = 16'h3faf;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
@@ -10839,12 +11113,15 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [15:0] bound$d;
     wire  [15:0] bound$q;
     reg  bound$clock;
+    reg  [15:0] head$d;
+    wire  [15:0] head$q;
+    reg  head$clock;
+    reg  [15:0] rd$d;
+    wire  [15:0] rd$q;
+    reg  rd$clock;
     reg  [15:0] ptr$d;
     wire  [15:0] ptr$q;
     reg  ptr$clock;
-    reg  [15:0] rd_flipped$d;
-    wire  [15:0] rd_flipped$q;
-    reg  rd_flipped$clock;
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
@@ -10859,7 +11136,6 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  is_one$clock;
     
     // Local signals
-    reg  [15:0] rd;
     reg  [15:0] next;
     
     // Sub module instances
@@ -10877,15 +11153,20 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(bound$q),
         .clock(bound$clock)
     );
+    top$lanes$3$taps$rows$ring$head head(
+        .d(head$d),
+        .q(head$q),
+        .clock(head$clock)
+    );
+    top$lanes$3$taps$rows$ring$rd rd(
+        .d(rd$d),
+        .q(rd$q),
+        .clock(rd$clock)
+    );
     top$lanes$3$taps$rows$ring$ptr ptr(
         .d(ptr$d),
         .q(ptr$q),
         .clock(ptr$clock)
-    );
-    top$lanes$3$taps$rows$ring$rd_flipped rd_flipped(
-        .d(rd_flipped$d),
-        .q(rd_flipped$q),
-        .clock(rd_flipped$clock)
     );
     top$lanes$3$taps$rows$ring$one one(
         .d(one$d),
@@ -10912,15 +11193,17 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] data_out_pass;
     always @(*) begin
         bound$clock = clock;
+        head$clock = clock;
+        rd$clock = clock;
         ptr$clock = clock;
-        rd_flipped$clock = clock;
         one$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
         bound$d = bound$q;
+        head$d = head$q;
+        rd$d = rd$q;
         ptr$d = ptr$q;
-        rd_flipped$d = rd_flipped$q;
         one$d = one$q;
         short$d = short$q;
         is_short$d = is_short$q;
@@ -10930,17 +11213,17 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         bound$d = last - 'h1;
         is_short$d = last < 'h2;
         is_one$d = last == 'h0;
-        rd = rd_flipped$q ^ flip;
-        next = rd + 'h1;
-        if ((rd >= bound$q) | (rd >= longest_last)) begin
+        next = head$q + 'h1;
+        if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
         end
-        rd_flipped$d = next ^ flip;
-        ptr$d = rd;
+        head$d = next;
+        rd$d = head$q;
+        ptr$d = rd$q;
         ram$write_address = ptr$q;
         ram$write_data = data_in;
         ram$write_enable = write_enable & has_ring;
-        ram$read_address = rd;
+        ram$read_address = rd$q;
         one$d = one$q;
         if (write_enable) begin
             one$d = data_in & mask;
@@ -10977,6 +11260,23 @@ module top$lanes$3$taps$rows$ring$bound(d,q,clock);
     end
           
 endmodule // top$lanes$3$taps$rows$ring$bound
+module top$lanes$3$taps$rows$ring$head(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$ring$head
 module top$lanes$3$taps$rows$ring$is_one(d,q,clock);
     
     // Module arguments
@@ -11170,7 +11470,7 @@ module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
     end
 endmodule // top$lanes$3$taps$rows$ring$ram
-module top$lanes$3$taps$rows$ring$rd_flipped(d,q,clock);
+module top$lanes$3$taps$rows$ring$rd(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -11186,7 +11486,7 @@ module top$lanes$3$taps$rows$ring$rd_flipped(d,q,clock);
        q <= d;
     end
           
-endmodule // top$lanes$3$taps$rows$ring$rd_flipped
+endmodule // top$lanes$3$taps$rows$ring$rd
 module top$lanes$3$taps$rows$ring$short(d,q,clock);
     
     // Module arguments

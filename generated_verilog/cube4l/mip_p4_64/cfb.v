@@ -387,6 +387,8 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] e_nb;
     reg  [15:0] z0;
     reg  [15:0] z1;
+    reg  [15:0] ny_m1;
+    reg  [15:0] b_m1;
     
     // Sub module instances
     top$cfb$lanes$0 lanes$0(
@@ -810,8 +812,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_d4$d = nb_d3$q;
         z0 = slices[('h20)+:(16)];
         z1 = slices[('h30)+:(16)];
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        b_last$d = beats[('h20)+:(16)] - 'h1;
+        ny_m1 = dims[('h10)+:(16)] - 'h1;
+        b_m1 = beats[('h20)+:(16)] - 'h1;
+        ny_last$d = ny_m1;
+        b_last$d = b_m1;
         lanes$0$clock = clock;
         lanes$0$dims = dims;
         lanes$0$slices = slices;
@@ -989,8 +993,8 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
             ns_c$d = z0;
             nbeam_c$d = 'h0;
             nb_c$d = 'h0;
-            nb_left$d = beats[('h20)+:(16)] - 'h1;
-            nbeam_left$d = dims[('h10)+:(16)] - 'h1;
+            nb_left$d = b_m1;
+            nbeam_left$d = ny_m1;
             ns_left$d = z1 - z0;
         end
         if (running$q) begin

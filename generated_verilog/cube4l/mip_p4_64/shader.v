@@ -175,6 +175,12 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] alpha_q$8$d;
     wire  [15:0] alpha_q$8$q;
     reg  alpha_q$8$clock;
+    reg  [15:0] alpha_q$9$d;
+    wire  [15:0] alpha_q$9$q;
+    reg  alpha_q$9$clock;
+    reg  [15:0] alpha_q$10$d;
+    wire  [15:0] alpha_q$10$q;
+    reg  alpha_q$10$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -217,6 +223,12 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$13$d;
     wire  [15:0] value_q$13$q;
     reg  value_q$13$clock;
+    reg  [15:0] value_q$14$d;
+    wire  [15:0] value_q$14$q;
+    reg  value_q$14$clock;
+    reg  [15:0] value_q$15$d;
+    wire  [15:0] value_q$15$q;
+    reg  value_q$15$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -262,9 +274,18 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$14$d;
     wire  valid_q$14$q;
     reg  valid_q$14$clock;
+    reg  valid_q$15$d;
+    wire  valid_q$15$q;
+    reg  valid_q$15$clock;
+    reg  valid_q$16$d;
+    wire  valid_q$16$q;
+    reg  valid_q$16$clock;
     reg  [15:0] specular_q$d;
     wire  [15:0] specular_q$q;
     reg  specular_q$clock;
+    reg  [15:0] specular_qq$d;
+    wire  [15:0] specular_qq$q;
+    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
@@ -490,6 +511,16 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(alpha_q$8$q),
         .clock(alpha_q$8$clock)
     );
+    top$lanes$0$shader$alpha_q$9 alpha_q$9(
+        .d(alpha_q$9$d),
+        .q(alpha_q$9$q),
+        .clock(alpha_q$9$clock)
+    );
+    top$lanes$0$shader$alpha_q$10 alpha_q$10(
+        .d(alpha_q$10$d),
+        .q(alpha_q$10$q),
+        .clock(alpha_q$10$clock)
+    );
     top$lanes$0$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
         .q(value_q$0$q),
@@ -559,6 +590,16 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$13$d),
         .q(value_q$13$q),
         .clock(value_q$13$clock)
+    );
+    top$lanes$0$shader$value_q$14 value_q$14(
+        .d(value_q$14$d),
+        .q(value_q$14$q),
+        .clock(value_q$14$clock)
+    );
+    top$lanes$0$shader$value_q$15 value_q$15(
+        .d(value_q$15$d),
+        .q(value_q$15$q),
+        .clock(value_q$15$clock)
     );
     top$lanes$0$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -635,10 +676,25 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$14$q),
         .clock(valid_q$14$clock)
     );
+    top$lanes$0$shader$valid_q$15 valid_q$15(
+        .d(valid_q$15$d),
+        .q(valid_q$15$q),
+        .clock(valid_q$15$clock)
+    );
+    top$lanes$0$shader$valid_q$16 valid_q$16(
+        .d(valid_q$16$d),
+        .q(valid_q$16$q),
+        .clock(valid_q$16$clock)
+    );
     top$lanes$0$shader$specular_q specular_q(
         .d(specular_q$d),
         .q(specular_q$q),
         .clock(specular_q$clock)
+    );
+    top$lanes$0$shader$specular_qq specular_qq(
+        .d(specular_qq$d),
+        .q(specular_qq$q),
+        .clock(specular_qq$clock)
     );
     top$lanes$0$shader$shaded_q$0 shaded_q$0(
         .d(shaded_q$0$d),
@@ -684,11 +740,13 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_pass;
     always @(*) begin
         specular_q$clock = clock;
+        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
         specular_q$d = specular_q$q;
+        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -764,23 +822,25 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         row_q$2$d = row_q$1$q;
         row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        alpha_q$3$clock = clock;
         lut_q$4$clock = clock;
-        alpha_q$4$clock = clock;
         lut_q$5$clock = clock;
-        alpha_q$5$clock = clock;
         lut_q$6$clock = clock;
-        alpha_q$6$clock = clock;
         lut_q$7$clock = clock;
-        alpha_q$7$clock = clock;
         lut_q$8$clock = clock;
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$2$clock = clock;
+        alpha_q$3$clock = clock;
+        alpha_q$4$clock = clock;
+        alpha_q$5$clock = clock;
+        alpha_q$6$clock = clock;
+        alpha_q$7$clock = clock;
         alpha_q$8$clock = clock;
+        alpha_q$9$clock = clock;
+        alpha_q$10$clock = clock;
         lut_q$0$d = lut$data;
         lut_q$1$d = lut_q$0$q;
         lut_q$2$d = lut_q$1$q;
@@ -814,6 +874,8 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$11$clock = clock;
         value_q$12$clock = clock;
         value_q$13$clock = clock;
+        value_q$14$clock = clock;
+        value_q$15$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -829,6 +891,8 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$12$clock = clock;
         valid_q$13$clock = clock;
         valid_q$14$clock = clock;
+        valid_q$15$clock = clock;
+        valid_q$16$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -844,6 +908,8 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$11$d = value_q$10$q;
         value_q$12$d = value_q$11$q;
         value_q$13$d = value_q$12$q;
+        value_q$14$d = value_q$13$q;
+        value_q$15$d = value_q$14$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
@@ -858,6 +924,8 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$12$d = valid_q$11$q;
         valid_q$13$d = valid_q$12$q;
         valid_q$14$d = valid_q$13$q;
+        valid_q$15$d = valid_q$14$q;
+        valid_q$16$d = valid_q$15$q;
         alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
@@ -875,6 +943,8 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         alpha_q$6$d = alpha_q$5$q;
         alpha_q$7$d = alpha_q$6$q;
         alpha_q$8$d = alpha_q$7$q;
+        alpha_q$9$d = alpha_q$8$q;
+        alpha_q$10$d = alpha_q$9$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
@@ -882,15 +952,16 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             specular = lighting$specular;
         end
         specular_q$d = specular;
+        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
+        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -909,17 +980,17 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$7$q;
-        mul_g$b = alpha_q$7$q;
-        mul_b$b = alpha_q$7$q;
+        mul_r$b = alpha_q$8$q;
+        mul_g$b = alpha_q$8$q;
+        mul_b$b = alpha_q$8$q;
         if (scalar) begin
-            r_q$d = value_q$13$q;
+            r_q$d = value_q$15$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$8$q;
+            r_q$d = alpha_q$10$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -928,7 +999,7 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$8$q;
+            a_q$d = alpha_q$10$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -940,7 +1011,7 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$14$q;
+            valid_pass = valid_q$16$q;
         end
         r = r_pass;
         g = g_pass;
@@ -1001,6 +1072,23 @@ module top$lanes$0$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$alpha_q$1
+module top$lanes$0$shader$alpha_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$10
 module top$lanes$0$shader$alpha_q$2(d,q,clock);
     
     // Module arguments
@@ -1120,6 +1208,23 @@ module top$lanes$0$shader$alpha_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$alpha_q$8
+module top$lanes$0$shader$alpha_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$alpha_q$9
 module top$lanes$0$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -1647,6 +1752,23 @@ module top$lanes$0$shader$specular_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$specular_q
+module top$lanes$0$shader$specular_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$specular_qq
 module top$lanes$0$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -1766,6 +1888,40 @@ module top$lanes$0$shader$valid_q$14(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$valid_q$14
+module top$lanes$0$shader$valid_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$15
+module top$lanes$0$shader$valid_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$valid_q$16
 module top$lanes$0$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -2004,6 +2160,40 @@ module top$lanes$0$shader$value_q$13(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$value_q$13
+module top$lanes$0$shader$value_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$14
+module top$lanes$0$shader$value_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$value_q$15
 module top$lanes$0$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -2317,6 +2507,12 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] alpha_q$8$d;
     wire  [15:0] alpha_q$8$q;
     reg  alpha_q$8$clock;
+    reg  [15:0] alpha_q$9$d;
+    wire  [15:0] alpha_q$9$q;
+    reg  alpha_q$9$clock;
+    reg  [15:0] alpha_q$10$d;
+    wire  [15:0] alpha_q$10$q;
+    reg  alpha_q$10$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -2359,6 +2555,12 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$13$d;
     wire  [15:0] value_q$13$q;
     reg  value_q$13$clock;
+    reg  [15:0] value_q$14$d;
+    wire  [15:0] value_q$14$q;
+    reg  value_q$14$clock;
+    reg  [15:0] value_q$15$d;
+    wire  [15:0] value_q$15$q;
+    reg  value_q$15$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -2404,9 +2606,18 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$14$d;
     wire  valid_q$14$q;
     reg  valid_q$14$clock;
+    reg  valid_q$15$d;
+    wire  valid_q$15$q;
+    reg  valid_q$15$clock;
+    reg  valid_q$16$d;
+    wire  valid_q$16$q;
+    reg  valid_q$16$clock;
     reg  [15:0] specular_q$d;
     wire  [15:0] specular_q$q;
     reg  specular_q$clock;
+    reg  [15:0] specular_qq$d;
+    wire  [15:0] specular_qq$q;
+    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
@@ -2632,6 +2843,16 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(alpha_q$8$q),
         .clock(alpha_q$8$clock)
     );
+    top$lanes$1$shader$alpha_q$9 alpha_q$9(
+        .d(alpha_q$9$d),
+        .q(alpha_q$9$q),
+        .clock(alpha_q$9$clock)
+    );
+    top$lanes$1$shader$alpha_q$10 alpha_q$10(
+        .d(alpha_q$10$d),
+        .q(alpha_q$10$q),
+        .clock(alpha_q$10$clock)
+    );
     top$lanes$1$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
         .q(value_q$0$q),
@@ -2701,6 +2922,16 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$13$d),
         .q(value_q$13$q),
         .clock(value_q$13$clock)
+    );
+    top$lanes$1$shader$value_q$14 value_q$14(
+        .d(value_q$14$d),
+        .q(value_q$14$q),
+        .clock(value_q$14$clock)
+    );
+    top$lanes$1$shader$value_q$15 value_q$15(
+        .d(value_q$15$d),
+        .q(value_q$15$q),
+        .clock(value_q$15$clock)
     );
     top$lanes$1$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -2777,10 +3008,25 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$14$q),
         .clock(valid_q$14$clock)
     );
+    top$lanes$1$shader$valid_q$15 valid_q$15(
+        .d(valid_q$15$d),
+        .q(valid_q$15$q),
+        .clock(valid_q$15$clock)
+    );
+    top$lanes$1$shader$valid_q$16 valid_q$16(
+        .d(valid_q$16$d),
+        .q(valid_q$16$q),
+        .clock(valid_q$16$clock)
+    );
     top$lanes$1$shader$specular_q specular_q(
         .d(specular_q$d),
         .q(specular_q$q),
         .clock(specular_q$clock)
+    );
+    top$lanes$1$shader$specular_qq specular_qq(
+        .d(specular_qq$d),
+        .q(specular_qq$q),
+        .clock(specular_qq$clock)
     );
     top$lanes$1$shader$shaded_q$0 shaded_q$0(
         .d(shaded_q$0$d),
@@ -2826,11 +3072,13 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_pass;
     always @(*) begin
         specular_q$clock = clock;
+        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
         specular_q$d = specular_q$q;
+        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -2906,23 +3154,25 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         row_q$2$d = row_q$1$q;
         row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        alpha_q$3$clock = clock;
         lut_q$4$clock = clock;
-        alpha_q$4$clock = clock;
         lut_q$5$clock = clock;
-        alpha_q$5$clock = clock;
         lut_q$6$clock = clock;
-        alpha_q$6$clock = clock;
         lut_q$7$clock = clock;
-        alpha_q$7$clock = clock;
         lut_q$8$clock = clock;
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$2$clock = clock;
+        alpha_q$3$clock = clock;
+        alpha_q$4$clock = clock;
+        alpha_q$5$clock = clock;
+        alpha_q$6$clock = clock;
+        alpha_q$7$clock = clock;
         alpha_q$8$clock = clock;
+        alpha_q$9$clock = clock;
+        alpha_q$10$clock = clock;
         lut_q$0$d = lut$data;
         lut_q$1$d = lut_q$0$q;
         lut_q$2$d = lut_q$1$q;
@@ -2956,6 +3206,8 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$11$clock = clock;
         value_q$12$clock = clock;
         value_q$13$clock = clock;
+        value_q$14$clock = clock;
+        value_q$15$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -2971,6 +3223,8 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$12$clock = clock;
         valid_q$13$clock = clock;
         valid_q$14$clock = clock;
+        valid_q$15$clock = clock;
+        valid_q$16$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -2986,6 +3240,8 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$11$d = value_q$10$q;
         value_q$12$d = value_q$11$q;
         value_q$13$d = value_q$12$q;
+        value_q$14$d = value_q$13$q;
+        value_q$15$d = value_q$14$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
@@ -3000,6 +3256,8 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$12$d = valid_q$11$q;
         valid_q$13$d = valid_q$12$q;
         valid_q$14$d = valid_q$13$q;
+        valid_q$15$d = valid_q$14$q;
+        valid_q$16$d = valid_q$15$q;
         alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
@@ -3017,6 +3275,8 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         alpha_q$6$d = alpha_q$5$q;
         alpha_q$7$d = alpha_q$6$q;
         alpha_q$8$d = alpha_q$7$q;
+        alpha_q$9$d = alpha_q$8$q;
+        alpha_q$10$d = alpha_q$9$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
@@ -3024,15 +3284,16 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             specular = lighting$specular;
         end
         specular_q$d = specular;
+        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
+        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -3051,17 +3312,17 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$7$q;
-        mul_g$b = alpha_q$7$q;
-        mul_b$b = alpha_q$7$q;
+        mul_r$b = alpha_q$8$q;
+        mul_g$b = alpha_q$8$q;
+        mul_b$b = alpha_q$8$q;
         if (scalar) begin
-            r_q$d = value_q$13$q;
+            r_q$d = value_q$15$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$8$q;
+            r_q$d = alpha_q$10$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -3070,7 +3331,7 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$8$q;
+            a_q$d = alpha_q$10$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -3082,7 +3343,7 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$14$q;
+            valid_pass = valid_q$16$q;
         end
         r = r_pass;
         g = g_pass;
@@ -3143,6 +3404,23 @@ module top$lanes$1$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$alpha_q$1
+module top$lanes$1$shader$alpha_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$10
 module top$lanes$1$shader$alpha_q$2(d,q,clock);
     
     // Module arguments
@@ -3262,6 +3540,23 @@ module top$lanes$1$shader$alpha_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$alpha_q$8
+module top$lanes$1$shader$alpha_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$alpha_q$9
 module top$lanes$1$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -3789,6 +4084,23 @@ module top$lanes$1$shader$specular_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$specular_q
+module top$lanes$1$shader$specular_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$specular_qq
 module top$lanes$1$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -3908,6 +4220,40 @@ module top$lanes$1$shader$valid_q$14(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$valid_q$14
+module top$lanes$1$shader$valid_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$15
+module top$lanes$1$shader$valid_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$valid_q$16
 module top$lanes$1$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -4146,6 +4492,40 @@ module top$lanes$1$shader$value_q$13(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$value_q$13
+module top$lanes$1$shader$value_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$14
+module top$lanes$1$shader$value_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$value_q$15
 module top$lanes$1$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -4459,6 +4839,12 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] alpha_q$8$d;
     wire  [15:0] alpha_q$8$q;
     reg  alpha_q$8$clock;
+    reg  [15:0] alpha_q$9$d;
+    wire  [15:0] alpha_q$9$q;
+    reg  alpha_q$9$clock;
+    reg  [15:0] alpha_q$10$d;
+    wire  [15:0] alpha_q$10$q;
+    reg  alpha_q$10$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -4501,6 +4887,12 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$13$d;
     wire  [15:0] value_q$13$q;
     reg  value_q$13$clock;
+    reg  [15:0] value_q$14$d;
+    wire  [15:0] value_q$14$q;
+    reg  value_q$14$clock;
+    reg  [15:0] value_q$15$d;
+    wire  [15:0] value_q$15$q;
+    reg  value_q$15$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -4546,9 +4938,18 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$14$d;
     wire  valid_q$14$q;
     reg  valid_q$14$clock;
+    reg  valid_q$15$d;
+    wire  valid_q$15$q;
+    reg  valid_q$15$clock;
+    reg  valid_q$16$d;
+    wire  valid_q$16$q;
+    reg  valid_q$16$clock;
     reg  [15:0] specular_q$d;
     wire  [15:0] specular_q$q;
     reg  specular_q$clock;
+    reg  [15:0] specular_qq$d;
+    wire  [15:0] specular_qq$q;
+    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
@@ -4774,6 +5175,16 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(alpha_q$8$q),
         .clock(alpha_q$8$clock)
     );
+    top$lanes$2$shader$alpha_q$9 alpha_q$9(
+        .d(alpha_q$9$d),
+        .q(alpha_q$9$q),
+        .clock(alpha_q$9$clock)
+    );
+    top$lanes$2$shader$alpha_q$10 alpha_q$10(
+        .d(alpha_q$10$d),
+        .q(alpha_q$10$q),
+        .clock(alpha_q$10$clock)
+    );
     top$lanes$2$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
         .q(value_q$0$q),
@@ -4843,6 +5254,16 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$13$d),
         .q(value_q$13$q),
         .clock(value_q$13$clock)
+    );
+    top$lanes$2$shader$value_q$14 value_q$14(
+        .d(value_q$14$d),
+        .q(value_q$14$q),
+        .clock(value_q$14$clock)
+    );
+    top$lanes$2$shader$value_q$15 value_q$15(
+        .d(value_q$15$d),
+        .q(value_q$15$q),
+        .clock(value_q$15$clock)
     );
     top$lanes$2$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -4919,10 +5340,25 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$14$q),
         .clock(valid_q$14$clock)
     );
+    top$lanes$2$shader$valid_q$15 valid_q$15(
+        .d(valid_q$15$d),
+        .q(valid_q$15$q),
+        .clock(valid_q$15$clock)
+    );
+    top$lanes$2$shader$valid_q$16 valid_q$16(
+        .d(valid_q$16$d),
+        .q(valid_q$16$q),
+        .clock(valid_q$16$clock)
+    );
     top$lanes$2$shader$specular_q specular_q(
         .d(specular_q$d),
         .q(specular_q$q),
         .clock(specular_q$clock)
+    );
+    top$lanes$2$shader$specular_qq specular_qq(
+        .d(specular_qq$d),
+        .q(specular_qq$q),
+        .clock(specular_qq$clock)
     );
     top$lanes$2$shader$shaded_q$0 shaded_q$0(
         .d(shaded_q$0$d),
@@ -4968,11 +5404,13 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_pass;
     always @(*) begin
         specular_q$clock = clock;
+        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
         specular_q$d = specular_q$q;
+        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -5048,23 +5486,25 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         row_q$2$d = row_q$1$q;
         row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        alpha_q$3$clock = clock;
         lut_q$4$clock = clock;
-        alpha_q$4$clock = clock;
         lut_q$5$clock = clock;
-        alpha_q$5$clock = clock;
         lut_q$6$clock = clock;
-        alpha_q$6$clock = clock;
         lut_q$7$clock = clock;
-        alpha_q$7$clock = clock;
         lut_q$8$clock = clock;
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$2$clock = clock;
+        alpha_q$3$clock = clock;
+        alpha_q$4$clock = clock;
+        alpha_q$5$clock = clock;
+        alpha_q$6$clock = clock;
+        alpha_q$7$clock = clock;
         alpha_q$8$clock = clock;
+        alpha_q$9$clock = clock;
+        alpha_q$10$clock = clock;
         lut_q$0$d = lut$data;
         lut_q$1$d = lut_q$0$q;
         lut_q$2$d = lut_q$1$q;
@@ -5098,6 +5538,8 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$11$clock = clock;
         value_q$12$clock = clock;
         value_q$13$clock = clock;
+        value_q$14$clock = clock;
+        value_q$15$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -5113,6 +5555,8 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$12$clock = clock;
         valid_q$13$clock = clock;
         valid_q$14$clock = clock;
+        valid_q$15$clock = clock;
+        valid_q$16$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -5128,6 +5572,8 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$11$d = value_q$10$q;
         value_q$12$d = value_q$11$q;
         value_q$13$d = value_q$12$q;
+        value_q$14$d = value_q$13$q;
+        value_q$15$d = value_q$14$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
@@ -5142,6 +5588,8 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$12$d = valid_q$11$q;
         valid_q$13$d = valid_q$12$q;
         valid_q$14$d = valid_q$13$q;
+        valid_q$15$d = valid_q$14$q;
+        valid_q$16$d = valid_q$15$q;
         alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
@@ -5159,6 +5607,8 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         alpha_q$6$d = alpha_q$5$q;
         alpha_q$7$d = alpha_q$6$q;
         alpha_q$8$d = alpha_q$7$q;
+        alpha_q$9$d = alpha_q$8$q;
+        alpha_q$10$d = alpha_q$9$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
@@ -5166,15 +5616,16 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
             specular = lighting$specular;
         end
         specular_q$d = specular;
+        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
+        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -5193,17 +5644,17 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$7$q;
-        mul_g$b = alpha_q$7$q;
-        mul_b$b = alpha_q$7$q;
+        mul_r$b = alpha_q$8$q;
+        mul_g$b = alpha_q$8$q;
+        mul_b$b = alpha_q$8$q;
         if (scalar) begin
-            r_q$d = value_q$13$q;
+            r_q$d = value_q$15$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$8$q;
+            r_q$d = alpha_q$10$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -5212,7 +5663,7 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$8$q;
+            a_q$d = alpha_q$10$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -5224,7 +5675,7 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$14$q;
+            valid_pass = valid_q$16$q;
         end
         r = r_pass;
         g = g_pass;
@@ -5285,6 +5736,23 @@ module top$lanes$2$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$alpha_q$1
+module top$lanes$2$shader$alpha_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$10
 module top$lanes$2$shader$alpha_q$2(d,q,clock);
     
     // Module arguments
@@ -5404,6 +5872,23 @@ module top$lanes$2$shader$alpha_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$alpha_q$8
+module top$lanes$2$shader$alpha_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$alpha_q$9
 module top$lanes$2$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -5931,6 +6416,23 @@ module top$lanes$2$shader$specular_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$specular_q
+module top$lanes$2$shader$specular_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$specular_qq
 module top$lanes$2$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -6050,6 +6552,40 @@ module top$lanes$2$shader$valid_q$14(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$valid_q$14
+module top$lanes$2$shader$valid_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$15
+module top$lanes$2$shader$valid_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$valid_q$16
 module top$lanes$2$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -6288,6 +6824,40 @@ module top$lanes$2$shader$value_q$13(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$value_q$13
+module top$lanes$2$shader$value_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$14
+module top$lanes$2$shader$value_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$shader$value_q$15
 module top$lanes$2$shader$value_q$2(d,q,clock);
     
     // Module arguments
@@ -6601,6 +7171,12 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] alpha_q$8$d;
     wire  [15:0] alpha_q$8$q;
     reg  alpha_q$8$clock;
+    reg  [15:0] alpha_q$9$d;
+    wire  [15:0] alpha_q$9$q;
+    reg  alpha_q$9$clock;
+    reg  [15:0] alpha_q$10$d;
+    wire  [15:0] alpha_q$10$q;
+    reg  alpha_q$10$clock;
     reg  [15:0] value_q$0$d;
     wire  [15:0] value_q$0$q;
     reg  value_q$0$clock;
@@ -6643,6 +7219,12 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] value_q$13$d;
     wire  [15:0] value_q$13$q;
     reg  value_q$13$clock;
+    reg  [15:0] value_q$14$d;
+    wire  [15:0] value_q$14$q;
+    reg  value_q$14$clock;
+    reg  [15:0] value_q$15$d;
+    wire  [15:0] value_q$15$q;
+    reg  value_q$15$clock;
     reg  valid_q$0$d;
     wire  valid_q$0$q;
     reg  valid_q$0$clock;
@@ -6688,9 +7270,18 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$14$d;
     wire  valid_q$14$q;
     reg  valid_q$14$clock;
+    reg  valid_q$15$d;
+    wire  valid_q$15$q;
+    reg  valid_q$15$clock;
+    reg  valid_q$16$d;
+    wire  valid_q$16$q;
+    reg  valid_q$16$clock;
     reg  [15:0] specular_q$d;
     wire  [15:0] specular_q$q;
     reg  specular_q$clock;
+    reg  [15:0] specular_qq$d;
+    wire  [15:0] specular_qq$q;
+    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
@@ -6916,6 +7507,16 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(alpha_q$8$q),
         .clock(alpha_q$8$clock)
     );
+    top$lanes$3$shader$alpha_q$9 alpha_q$9(
+        .d(alpha_q$9$d),
+        .q(alpha_q$9$q),
+        .clock(alpha_q$9$clock)
+    );
+    top$lanes$3$shader$alpha_q$10 alpha_q$10(
+        .d(alpha_q$10$d),
+        .q(alpha_q$10$q),
+        .clock(alpha_q$10$clock)
+    );
     top$lanes$3$shader$value_q$0 value_q$0(
         .d(value_q$0$d),
         .q(value_q$0$q),
@@ -6985,6 +7586,16 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .d(value_q$13$d),
         .q(value_q$13$q),
         .clock(value_q$13$clock)
+    );
+    top$lanes$3$shader$value_q$14 value_q$14(
+        .d(value_q$14$d),
+        .q(value_q$14$q),
+        .clock(value_q$14$clock)
+    );
+    top$lanes$3$shader$value_q$15 value_q$15(
+        .d(value_q$15$d),
+        .q(value_q$15$q),
+        .clock(value_q$15$clock)
     );
     top$lanes$3$shader$valid_q$0 valid_q$0(
         .d(valid_q$0$d),
@@ -7061,10 +7672,25 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$14$q),
         .clock(valid_q$14$clock)
     );
+    top$lanes$3$shader$valid_q$15 valid_q$15(
+        .d(valid_q$15$d),
+        .q(valid_q$15$q),
+        .clock(valid_q$15$clock)
+    );
+    top$lanes$3$shader$valid_q$16 valid_q$16(
+        .d(valid_q$16$d),
+        .q(valid_q$16$q),
+        .clock(valid_q$16$clock)
+    );
     top$lanes$3$shader$specular_q specular_q(
         .d(specular_q$d),
         .q(specular_q$q),
         .clock(specular_q$clock)
+    );
+    top$lanes$3$shader$specular_qq specular_qq(
+        .d(specular_qq$d),
+        .q(specular_qq$q),
+        .clock(specular_qq$clock)
     );
     top$lanes$3$shader$shaded_q$0 shaded_q$0(
         .d(shaded_q$0$d),
@@ -7110,11 +7736,13 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_pass;
     always @(*) begin
         specular_q$clock = clock;
+        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
         specular_q$d = specular_q$q;
+        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -7190,23 +7818,25 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         row_q$2$d = row_q$1$q;
         row_q$3$d = row_q$2$q;
         lut_q$0$clock = clock;
-        alpha_q$0$clock = clock;
         lut_q$1$clock = clock;
-        alpha_q$1$clock = clock;
         lut_q$2$clock = clock;
-        alpha_q$2$clock = clock;
         lut_q$3$clock = clock;
-        alpha_q$3$clock = clock;
         lut_q$4$clock = clock;
-        alpha_q$4$clock = clock;
         lut_q$5$clock = clock;
-        alpha_q$5$clock = clock;
         lut_q$6$clock = clock;
-        alpha_q$6$clock = clock;
         lut_q$7$clock = clock;
-        alpha_q$7$clock = clock;
         lut_q$8$clock = clock;
+        alpha_q$0$clock = clock;
+        alpha_q$1$clock = clock;
+        alpha_q$2$clock = clock;
+        alpha_q$3$clock = clock;
+        alpha_q$4$clock = clock;
+        alpha_q$5$clock = clock;
+        alpha_q$6$clock = clock;
+        alpha_q$7$clock = clock;
         alpha_q$8$clock = clock;
+        alpha_q$9$clock = clock;
+        alpha_q$10$clock = clock;
         lut_q$0$d = lut$data;
         lut_q$1$d = lut_q$0$q;
         lut_q$2$d = lut_q$1$q;
@@ -7240,6 +7870,8 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$11$clock = clock;
         value_q$12$clock = clock;
         value_q$13$clock = clock;
+        value_q$14$clock = clock;
+        value_q$15$clock = clock;
         valid_q$0$clock = clock;
         valid_q$1$clock = clock;
         valid_q$2$clock = clock;
@@ -7255,6 +7887,8 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$12$clock = clock;
         valid_q$13$clock = clock;
         valid_q$14$clock = clock;
+        valid_q$15$clock = clock;
+        valid_q$16$clock = clock;
         value_q$0$d = value;
         valid_q$0$d = ~invalid | xray;
         value_q$1$d = value_q$0$q;
@@ -7270,6 +7904,8 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         value_q$11$d = value_q$10$q;
         value_q$12$d = value_q$11$q;
         value_q$13$d = value_q$12$q;
+        value_q$14$d = value_q$13$q;
+        value_q$15$d = value_q$14$q;
         valid_q$1$d = valid_q$0$q;
         valid_q$2$d = valid_q$1$q;
         valid_q$3$d = valid_q$2$q;
@@ -7284,6 +7920,8 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         valid_q$12$d = valid_q$11$q;
         valid_q$13$d = valid_q$12$q;
         valid_q$14$d = valid_q$13$q;
+        valid_q$15$d = valid_q$14$q;
+        valid_q$16$d = valid_q$15$q;
         alpha_gm$address = (16'(row_q$3$q) << 'h4) | 16'(gm_bin$bin);
         alpha = 16'(lut_q$2$q >> 'h30);
         if (gm_on) begin
@@ -7301,6 +7939,8 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         alpha_q$6$d = alpha_q$5$q;
         alpha_q$7$d = alpha_q$6$q;
         alpha_q$8$d = alpha_q$7$q;
+        alpha_q$9$d = alpha_q$8$q;
+        alpha_q$10$d = alpha_q$9$q;
         diffuse = m_max;
         specular = 'h0;
         if (shaded) begin
@@ -7308,15 +7948,16 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
             specular = lighting$specular;
         end
         specular_q$d = specular;
+        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_q$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_q$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_q$q);
+        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
+        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
+        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
@@ -7335,17 +7976,17 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
-        mul_r$b = alpha_q$7$q;
-        mul_g$b = alpha_q$7$q;
-        mul_b$b = alpha_q$7$q;
+        mul_r$b = alpha_q$8$q;
+        mul_g$b = alpha_q$8$q;
+        mul_b$b = alpha_q$8$q;
         if (scalar) begin
-            r_q$d = value_q$13$q;
+            r_q$d = value_q$15$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
         end
         else if (xray) begin
-            r_q$d = alpha_q$8$q;
+            r_q$d = alpha_q$10$q;
             g_q$d = 'h0;
             b_q$d = 'h0;
             a_q$d = 'h0;
@@ -7354,7 +7995,7 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
             r_q$d = mul_r$y;
             g_q$d = mul_g$y;
             b_q$d = mul_b$y;
-            a_q$d = alpha_q$8$q;
+            a_q$d = alpha_q$10$q;
         end
         r_pass = 'h0;
         g_pass = 'h0;
@@ -7366,7 +8007,7 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
             g_pass = g_q$q;
             b_pass = b_q$q;
             a_pass = a_q$q;
-            valid_pass = valid_q$14$q;
+            valid_pass = valid_q$16$q;
         end
         r = r_pass;
         g = g_pass;
@@ -7427,6 +8068,23 @@ module top$lanes$3$shader$alpha_q$1(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$alpha_q$1
+module top$lanes$3$shader$alpha_q$10(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$10
 module top$lanes$3$shader$alpha_q$2(d,q,clock);
     
     // Module arguments
@@ -7546,6 +8204,23 @@ module top$lanes$3$shader$alpha_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$alpha_q$8
+module top$lanes$3$shader$alpha_q$9(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$alpha_q$9
 module top$lanes$3$shader$b_q(d,q,clock);
     
     // Module arguments
@@ -8073,6 +8748,23 @@ module top$lanes$3$shader$specular_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$specular_q
+module top$lanes$3$shader$specular_qq(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$specular_qq
 module top$lanes$3$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -8192,6 +8884,40 @@ module top$lanes$3$shader$valid_q$14(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$valid_q$14
+module top$lanes$3$shader$valid_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$15
+module top$lanes$3$shader$valid_q$16(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$valid_q$16
 module top$lanes$3$shader$valid_q$2(d,q,clock);
     
     // Module arguments
@@ -8430,6 +9156,40 @@ module top$lanes$3$shader$value_q$13(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$value_q$13
+module top$lanes$3$shader$value_q$14(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$14
+module top$lanes$3$shader$value_q$15(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$shader$value_q$15
 module top$lanes$3$shader$value_q$2(d,q,clock);
     
     // Module arguments
