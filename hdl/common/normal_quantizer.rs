@@ -163,7 +163,7 @@ impl Logic for NormalQuantizer {
             if self.neg_q[i].q.val() {
                 self.sum_q[i].d.next = self.mag_q[i].q.val() + self.half_m1_q.q.val();
             }
-            // Stage 3: shift (`q`, below) and saturate to the limit; the mask (no
+            // Stage 3: shift (`q`, above) and saturate to the limit; the mask (no
             // change to a saturated magnitude) tells synthesis which bits
             // the build has.
             self.out_mag[i].d.next = self.q[i].val() & self.mask.val();

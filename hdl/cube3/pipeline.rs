@@ -246,7 +246,7 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
 }
 
 // `hdl_gen` needs literal loop bounds: the flags' registers beside the
-// shaders are written for a 15-clock shader.
+// shaders are written for a 17-clock shader.
 const _: () = assert!(SHADER_LATENCY == 17, "update the shaders' flag registers");
 
 impl<const P: usize, const H: usize> Logic for Cube3<P, H> {

@@ -16,7 +16,7 @@ use rust_hdl::prelude::*;
 const GATHER: usize = 1 + GATHER_DELAY;
 const RESULT: usize = GATHER + LATENCY + super::compositor::LATENCY;
 // `hdl_gen` needs literal loop bounds and indices: the update below is
-// written for a gather 8 clocks and a result 19 clocks after the input.
+// written for a gather 10 clocks and a result 21 clocks after the input.
 const _: () = assert!(
     GATHER == 10 && RESULT == 21,
     "update the literals in ControlDelay::update"
