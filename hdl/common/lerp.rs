@@ -2,9 +2,11 @@
 //! (§3.7) and Cube-3's TRILIN unit (§3, Fig. 4): `fixed::lerp_frac`, the
 //! product rounded half up, bit for bit, with one 16x16 multiplier (two for
 //! a difference wider than 16 bits), in two clocks (the compare, difference
-//! and product; the rounding and the sum) or, built [`Lerp::split`], in
-//! three (the compare and difference in a clock of their own, for speed:
-//! Cube-4L's bilinear unit).
+//! and product; the rounded sum) or, built [`Lerp::split`], in three (the
+//! compare and difference in a clock of their own, for speed: Cube-4L's
+//! bilinear unit). The rounded sum is one carry chain: `a` enters it
+//! shifted up with the rounding half below it, `(a << f) | 2^(f-1)`, an OR
+//! in the product's clock.
 
 use rust_hdl::prelude::*;
 
@@ -14,11 +16,14 @@ pub const LATENCY: usize = 2;
 pub const SPLIT_LATENCY: usize = 3;
 
 /// `lerp(a, b, w)` with `w` in `0..=2^frac`, in [`LATENCY`] or
-/// [`SPLIT_LATENCY`] clocks. In unsigned
-/// form: for `b >= a`, `a + (((b - a) * w + 2^(f-1)) >> f)`; for `b < a`,
-/// `a - (((a - b) * w + 2^(f-1) - 1) >> f)` (the arithmetic shift of the
-/// golden model). A wide lerp's 32-bit difference goes through two 16x16
-/// multipliers, `d*w = (d_hi*w << 16) + d_lo*w`.
+/// [`SPLIT_LATENCY`] clocks. The golden model's
+/// `a + (((b - a) * w + 2^(f-1)) >> f)` (arithmetic shift) is
+/// `((a << f) + 2^(f-1) + (b - a) * w) >> f`, since `a` is whole; in
+/// unsigned form, with `p = |b - a| * w`, `(A + p) >> f` for `b >= a` and
+/// `(A - p) >> f` for `b < a`, where `A = (a << f) | 2^(f-1)` (neither
+/// goes below zero: the result lies between `a` and `b`). A wide lerp's
+/// 32-bit difference goes through two 16x16 multipliers,
+/// `d*w = (d_hi*w << 16) + d_lo*w`.
 #[derive(LogicBlock)]
 pub struct Lerp {
     pub clock: Signal<In, Clock>,
@@ -50,10 +55,11 @@ pub struct Lerp {
     /// The product's clock.
     prod: Signal<Local, Bits<64>>,
     up_q2: DFF<Bit>,
-    a_q2: DFF<Bits<32>>,
+    /// `(a << f) | 2^(f-1)`.
+    a_q2: DFF<Bits<64>>,
     prod_q: DFF<Bits<64>>,
-    step_up: Signal<Local, Bits<32>>,
-    step_down: Signal<Local, Bits<32>>,
+    /// The last clock's sum, `f` bits above the result.
+    sum: Signal<Local, Bits<64>>,
     y_q: DFF<Bits<32>>,
 }
 
@@ -94,8 +100,7 @@ impl Lerp {
             up_q2: Default::default(),
             a_q2: Default::default(),
             prod_q: Default::default(),
-            step_up: Default::default(),
-            step_down: Default::default(),
+            sum: Default::default(),
             y_q: Default::default(),
         }
     }
@@ -134,18 +139,16 @@ impl Logic for Lerp {
                     + bit_cast::<64, 32>(self.diff.val().get_bits::<16>(0) * self.w_in.val());
         }
         self.up_q2.d.next = self.up.val();
-        self.a_q2.d.next = self.a_in.val();
+        self.a_q2.d.next =
+            (bit_cast::<64, 32>(self.a_in.val()) << self.shift.val()) | self.half.val();
         self.prod_q.d.next = self.prod.val();
-        // The last clock: rounded, onto `a`.
-        self.step_up.next =
-            bit_cast::<32, 64>((self.prod_q.q.val() + self.half.val()) >> self.shift.val());
-        self.step_down.next =
-            bit_cast::<32, 64>((self.prod_q.q.val() + self.half.val() - 1) >> self.shift.val());
+        // The last clock: the product onto `a` and the rounding half, one
+        // carry chain, and the shift.
+        self.sum.next = self.a_q2.q.val() - self.prod_q.q.val();
         if self.up_q2.q.val() {
-            self.y_q.d.next = self.a_q2.q.val() + self.step_up.val();
-        } else {
-            self.y_q.d.next = self.a_q2.q.val() - self.step_down.val();
+            self.sum.next = self.a_q2.q.val() + self.prod_q.q.val();
         }
+        self.y_q.d.next = bit_cast::<32, 64>(self.sum.val() >> self.shift.val());
         self.y.next = self.y_q.q.val();
     }
 }

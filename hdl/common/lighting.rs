@@ -2,21 +2,24 @@
 //! shading units), bit for bit as `golden_model::lut::Lighting`: the
 //! cosines between `-q` and the light and half vectors from two dot
 //! products and a reciprocal norm, each indexing a host-loaded table.
-//! [`LATENCY`] register stages, none with more than one multiplier or one
-//! wide carry chain in series (but stage 5 with normals wider than 5 bits):
+//! [`LATENCY`] register stages, none with more than one multiplier or two
+//! carry chains in series (stage 5 three with normals wider than 5 bits):
 //!
 //! 1. the products of `q`'s magnitudes and the registers' (held in
 //!    registers of their own: they change only with a host write), their
 //!    signs, and `|q|²` from three square tables (LUT logic, no
 //!    multiplier);
-//! 2. the dot products `q · light`, `q · half` in two's complement, and
-//!    `rnorm(|q|²)` from a constant ROM;
-//! 3. each dot product made positive and saturated to `normal_bits + 11`
-//!    bits;
+//! 2. the products in two's complement, the first two summed and the third
+//!    registered beside them, and `rnorm(|q|²)` from a constant ROM;
+//! 3. the dot products `q · light`, `q · half` (the last sum), each made
+//!    positive and saturated to `normal_bits + 11` bits, its tests
+//!    reductions of the sum's bits, not compares after it;
 //! 4. `t = dot · rnorm`, one 16x16 multiplier each for the dot product's
 //!    low 16 bits, and one for its bits above them (not built up to 5 bits);
 //! 5. the cosine index `min(1023, (t · 1023 + 2^25) >> 26)`, `t` the sum
-//!    of the two products (one carry chain more above 5 bits);
+//!    of the two products (one carry chain more above 5 bits): the sum's
+//!    bits up to 2^36, and beside it the saturation as a compare of `t`
+//!    with a constant ([`saturates_from`]), not of the shifted sum;
 //! 6. the diffuse and specular tables' registered reads;
 //! 7. their words registered (the specular term 0 where the light's dot
 //!    product is not positive).
@@ -40,6 +43,17 @@ use rust_hdl::prelude::*;
 
 /// Clocks from the quantized normal to the terms.
 pub const LATENCY: usize = 7;
+
+/// Stage 5's `(t << 10) - t` is `t · (2^COS_BITS - 1)`.
+const _: () = assert!(COS_BITS == 10);
+
+/// The least `t` whose cosine index `(t · last + half) >> shift` exceeds
+/// `last`: `ceil(((last + 1) << shift - half) / last)`.
+pub fn saturates_from() -> u64 {
+    let last = (1u64 << COS_BITS) - 1;
+    let shift = DIR_FRAC + RNORM_FRAC;
+    (((last + 1) << shift) - (1u64 << (shift - 1))).div_ceil(last)
+}
 
 /// `|q|²` bits of the widest normal: `3 · 127² < 2^16`.
 const N2_BITS: usize = 16;
@@ -81,10 +95,15 @@ pub struct Lighting {
     t_ph: [Signal<Local, Bits<32>>; 3],
     n2: Signal<Local, Bits<16>>,
     n2_q: DFF<Bits<16>>,
-    /// Stage 2: the sums.
-    dot_l: DFF<Bits<32>>,
-    dot_h: DFF<Bits<32>>,
+    /// Stage 2: the first two products' sum, and the third.
+    pair_l: DFF<Bits<32>>,
+    pair_h: DFF<Bits<32>>,
+    third_l: DFF<Bits<32>>,
+    third_h: DFF<Bits<32>>,
     rn: DFF<Bits<16>>,
+    /// Stage 3: the dot products.
+    dot_l: Signal<Local, Bits<32>>,
+    dot_h: Signal<Local, Bits<32>>,
     /// Stage 3: the saturated dot products, the saturation `2^(normal_bits
     /// + DIR_FRAC) - 1` (also their mask).
     d_l: DFF<Bits<32>>,
@@ -106,8 +125,8 @@ pub struct Lighting {
     /// Stage 5.
     tt_l: Signal<Local, Bits<64>>,
     tt_h: Signal<Local, Bits<64>>,
-    i_l: Signal<Local, Bits<64>>,
-    i_h: Signal<Local, Bits<64>>,
+    i_l: Signal<Local, Bits<COS_BITS_U>>,
+    i_h: Signal<Local, Bits<COS_BITS_U>>,
     idx_l: DFF<Bits<COS_BITS_U>>,
     idx_h: DFF<Bits<COS_BITS_U>>,
     lit_5: DFF<Bit>,
@@ -117,7 +136,9 @@ pub struct Lighting {
     specular_q: DFF<Bits<16>>,
     half_ulp: Constant<Bits<64>>,
     shift: Constant<Bits<8>>,
-    last: Constant<Bits<64>>,
+    last: Constant<Bits<COS_BITS_U>>,
+    /// [`saturates_from`].
+    sat_t: Constant<Bits<64>>,
 }
 
 /// [`COS_BITS`] as a const generic.
@@ -168,6 +189,10 @@ impl Lighting {
             p_h: Default::default(),
             n2: Default::default(),
             n2_q: Default::default(),
+            pair_l: Default::default(),
+            pair_h: Default::default(),
+            third_l: Default::default(),
+            third_h: Default::default(),
             dot_l: Default::default(),
             dot_h: Default::default(),
             rn: Default::default(),
@@ -195,6 +220,7 @@ impl Lighting {
             half_ulp: Constant::new((1u64 << (DIR_FRAC + RNORM_FRAC - 1)).to_bits()),
             shift: Constant::new(((DIR_FRAC + RNORM_FRAC) as u64).to_bits()),
             last: Constant::new(((1u64 << COS_BITS) - 1).to_bits()),
+            sat_t: Constant::new(saturates_from().to_bits()),
         }
     }
 
@@ -216,8 +242,8 @@ impl Logic for Lighting {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, n2_q, dot_l, dot_h, rn, d_l, d_h, rn_3, lit_3, t_l, t_h, u_l, u_h, lit_4,
-            idx_l, idx_h, lit_5, lit_6, diffuse_q, specular_q
+            self, clock, n2_q, pair_l, pair_h, third_l, third_h, rn, d_l, d_h, rn_3, lit_3, t_l,
+            t_h, u_l, u_h, lit_4, idx_l, idx_h, lit_5, lit_6, diffuse_q, specular_q
         );
         self.regs.clock.next = self.clock.val();
         self.regs.host_write.next = self.host_write.val();
@@ -286,7 +312,8 @@ impl Logic for Lighting {
         self.n2.next =
             self.square[0].data.val() + self.square[1].data.val() + self.square[2].data.val();
         self.n2_q.d.next = self.n2.val();
-        // Stage 2: the dot products in two's complement, and 1 / |q|.
+        // Stage 2: the products in two's complement, the first two summed,
+        // and 1 / |q|.
         for i in 0..3 {
             self.t_pl[i].next = self.p_l[i].q.val();
             if self.sl_q[i].q.val() {
@@ -297,26 +324,32 @@ impl Logic for Lighting {
                 self.t_ph[i].next = 0 - self.p_h[i].q.val();
             }
         }
-        self.dot_l.d.next = self.t_pl[0].val() + self.t_pl[1].val() + self.t_pl[2].val();
-        self.dot_h.d.next = self.t_ph[0].val() + self.t_ph[1].val() + self.t_ph[2].val();
+        self.pair_l.d.next = self.t_pl[0].val() + self.t_pl[1].val();
+        self.pair_h.d.next = self.t_ph[0].val() + self.t_ph[1].val();
+        self.third_l.d.next = self.t_pl[2].val();
+        self.third_h.d.next = self.t_ph[2].val();
         self.rnorm.address.next = self.n2_q.q.val();
         self.rn.d.next = self.rnorm.data.val();
-        // Stage 3: a positive dot product, saturated (and masked: no change
-        // to a saturated value) to normal_bits + DIR_FRAC bits.
-        self.d_l.d.next = self.dot_l.q.val() & self.saturation.val();
-        if self.dot_l.q.val().get_bit(31) | (self.dot_l.q.val() == 0) {
+        // Stage 3: the dot products, positive ones saturated (and masked:
+        // no change to a saturated value) to normal_bits + DIR_FRAC bits. A
+        // positive sum exceeds the saturation when it has a bit above the
+        // mask: a reduction, not a compare.
+        self.dot_l.next = self.pair_l.q.val() + self.third_l.q.val();
+        self.dot_h.next = self.pair_h.q.val() + self.third_h.q.val();
+        self.d_l.d.next = self.dot_l.val() & self.saturation.val();
+        if self.dot_l.val().get_bit(31) | (self.dot_l.val() == 0) {
             self.d_l.d.next = 0.into();
-        } else if self.dot_l.q.val() > self.saturation.val() {
+        } else if (self.dot_l.val() & !self.saturation.val()) != 0 {
             self.d_l.d.next = self.saturation.val();
         }
-        self.d_h.d.next = self.dot_h.q.val() & self.saturation.val();
-        if self.dot_h.q.val().get_bit(31) | (self.dot_h.q.val() == 0) {
+        self.d_h.d.next = self.dot_h.val() & self.saturation.val();
+        if self.dot_h.val().get_bit(31) | (self.dot_h.val() == 0) {
             self.d_h.d.next = 0.into();
-        } else if self.dot_h.q.val() > self.saturation.val() {
+        } else if (self.dot_h.val() & !self.saturation.val()) != 0 {
             self.d_h.d.next = self.saturation.val();
         }
         self.rn_3.d.next = self.rn.q.val();
-        self.lit_3.d.next = !self.dot_l.q.val().get_bit(31) & (self.dot_l.q.val() != 0);
+        self.lit_3.d.next = !self.dot_l.val().get_bit(31) & (self.dot_l.val() != 0);
         // Stage 4: times 1 / |q|, the dot product's low 16 bits and the
         // bits above them (zero up to 5-bit normals) apart.
         self.t_l.d.next = self.d_l.q.val().get_bits::<16>(0) * self.rn_3.q.val();
@@ -328,7 +361,9 @@ impl Logic for Lighting {
             self.u_h.d.next = self.d_h.q.val().get_bits::<16>(16) * self.rn_3.q.val();
         }
         self.lit_4.d.next = self.lit_3.q.val();
-        // Stage 5: the cosine to the nearest table entry.
+        // Stage 5: the cosine to the nearest table entry; only the index's
+        // 10 bits of the sum are used, so synthesis builds its chains no
+        // wider than 2^36.
         self.tt_l.next = bit_cast::<64, 32>(self.t_l.q.val());
         self.tt_h.next = bit_cast::<64, 32>(self.t_h.q.val());
         if self.wide_dot.val() {
@@ -337,18 +372,20 @@ impl Logic for Lighting {
             self.tt_h.next =
                 bit_cast::<64, 32>(self.t_h.q.val()) + (bit_cast::<64, 32>(self.u_h.q.val()) << 16);
         }
-        self.i_l.next =
-            ((self.tt_l.val() << 10) - self.tt_l.val() + self.half_ulp.val()) >> self.shift.val();
-        if self.i_l.val() > self.last.val() {
-            self.i_l.next = self.last.val();
+        self.i_l.next = bit_cast::<COS_BITS_U, 64>(
+            ((self.tt_l.val() << 10) - self.tt_l.val() + self.half_ulp.val()) >> self.shift.val(),
+        );
+        self.i_h.next = bit_cast::<COS_BITS_U, 64>(
+            ((self.tt_h.val() << 10) - self.tt_h.val() + self.half_ulp.val()) >> self.shift.val(),
+        );
+        self.idx_l.d.next = self.i_l.val();
+        if self.tt_l.val() >= self.sat_t.val() {
+            self.idx_l.d.next = self.last.val();
         }
-        self.i_h.next =
-            ((self.tt_h.val() << 10) - self.tt_h.val() + self.half_ulp.val()) >> self.shift.val();
-        if self.i_h.val() > self.last.val() {
-            self.i_h.next = self.last.val();
+        self.idx_h.d.next = self.i_h.val();
+        if self.tt_h.val() >= self.sat_t.val() {
+            self.idx_h.d.next = self.last.val();
         }
-        self.idx_l.d.next = bit_cast::<COS_BITS_U, 64>(self.i_l.val());
-        self.idx_h.d.next = bit_cast::<COS_BITS_U, 64>(self.i_h.val());
         self.lit_5.d.next = self.lit_4.q.val();
         // Stage 6: the tables' reads.
         self.diffuse_table.address.next = self.idx_l.q.val();
@@ -362,5 +399,20 @@ impl Logic for Lighting {
         }
         self.diffuse.next = self.diffuse_q.q.val();
         self.specular.next = self.specular_q.q.val();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn saturation_starts_where_the_index_passes_1023() {
+        // By hand: (1024 * 2^26 - 2^25) / 1023 = 68 685 922 304 / 1023
+        // = 67 141 664.03..., and 67 141 664 * 1023 = 68 685 922 272.
+        assert_eq!(saturates_from(), 67_141_665);
+        let index = |t: u64| (t * 1023 + (1 << 25)) >> 26;
+        assert_eq!(index(saturates_from() - 1), 1023);
+        assert_eq!(index(saturates_from()), 1024);
     }
 }

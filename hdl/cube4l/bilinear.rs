@@ -11,8 +11,8 @@
 //!
 //! One voxel per clock with [`LATENCY`] clocks of latency, pipelined for
 //! speed: the cells and weights are registered on entry, and each lerp takes
-//! `lerp::SPLIT_LATENCY` clocks: its compare and difference, its product, and the
-//! rounding shift and the sum, one a clock. Every channel is 32 bits wide
+//! `lerp::SPLIT_LATENCY` clocks: its compare and difference, its product, and
+//! the rounded sum (one carry chain), one a clock. Every channel is 32 bits wide
 //! so that channel 0 can carry the X-ray sum (`rgba_bits + log2(depth)`
 //! bits); for X-ray the difference is split into 16-bit halves for two
 //! 16x16 multipliers. Every other channel, and channel 0 in the other

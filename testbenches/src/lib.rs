@@ -213,6 +213,7 @@ clocked!(
     [const P: usize] hdl::cube3::compositor::Rpc<P>,
     [] hdl::cube3::trilin::Trilin,
     [] hdl::common::shader::Shader,
+    [] hdl::common::lighting::Lighting,
 );
 
 /// A moment of a clock-by-clock testbench: before rising edge `t` (set

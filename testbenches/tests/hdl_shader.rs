@@ -209,3 +209,94 @@ fn shader_lights_every_normal_width() {
         );
     }
 }
+
+/// The lighting unit alone against `golden_model::lut::Lighting::cos_index`,
+/// its tables the identity (word `i` holds `i`, so its outputs are the
+/// cosine indices), with light and half registers the host may write but
+/// no scene makes: unit vectors, full-scale and most-negative components,
+/// and vectors whose dot products pass the saturation at every normal
+/// width; each normal's components random up to full scale, extremes first.
+#[test]
+fn lighting_saturates_as_the_golden_model_on_any_register() {
+    use golden_model::host::{pack3, Reg, Write};
+    use golden_model::lut::{Lighting as GoldenLighting, COS_BITS};
+    use hdl::common::lighting::{Lighting, LATENCY as LIGHTING_LATENCY};
+    let registers: [([i32; 3], [i32; 3]); 5] = [
+        ([1448, -1448, 0], [0, 0, 2048]),
+        ([32767, 32767, 32767], [-32768, -32768, -32768]),
+        ([-32768, 0, 32767], [32767, -1, 1]),
+        ([4000, -3000, 2500], [2048, 2048, 2048]),
+        ([1, 0, 0], [0, -2, 0]),
+    ];
+    for normal_bits in [3, 5, 6, 8] {
+        let lim = (1i32 << (normal_bits - 1)) - 1;
+        let mut r = Vectors::new(31 + normal_bits as u64);
+        let normals: Vec<[i32; 3]> = (0..N)
+            .map(|i| {
+                let mut c = || match i % 7 {
+                    0 => lim,
+                    1 => -lim,
+                    2 => 0,
+                    _ => r.below(2 * lim as u32) as i32 - lim,
+                };
+                [c(), c(), c()]
+            })
+            .collect();
+        for (light, half) in registers {
+            let expected: Vec<(u32, u32)> = normals
+                .iter()
+                .map(|&q| {
+                    let (d, lit) = GoldenLighting::cos_index(q, light, normal_bits);
+                    let s = GoldenLighting::cos_index(q, half, normal_bits).0;
+                    (d, if lit { s } else { 0 })
+                })
+                .collect();
+            let mut uut = Lighting::new(16, normal_bits);
+            let identity: Vec<u32> = (0..1u32 << COS_BITS).collect();
+            uut.preload(&identity, &identity);
+            uut.connect_all();
+            let loads = [
+                Write {
+                    address: Reg::Light.address(),
+                    data: pack3(light),
+                },
+                Write {
+                    address: Reg::Half.address(),
+                    data: pack3(half),
+                },
+            ];
+            let n = loads.len() + 1;
+            let label = format!("{normal_bits}-bit normals, light {light:?}, half {half:?}");
+            let normals = normals.clone();
+            run_clocks(
+                uut,
+                n + N + LIGHTING_LATENCY,
+                &label.clone(),
+                move |e, x| match e {
+                    Edge::Before(t) if t < loads.len() => drive_host_port!(x, Some(&loads[t])),
+                    Edge::Before(t) => {
+                        drive_host_port!(x, None::<&Write>);
+                        let q = normals[t.saturating_sub(n).min(N - 1)];
+                        for (i, c) in q.into_iter().enumerate() {
+                            x.q_neg[i].next = c < 0;
+                            x.q_mag[i].next = (c.unsigned_abs() as u64).to_bits();
+                        }
+                    }
+                    Edge::After(t)
+                        if t + 1 >= n + LIGHTING_LATENCY && t + 1 < n + LIGHTING_LATENCY + N =>
+                    {
+                        let i = t + 1 - n - LIGHTING_LATENCY;
+                        let got = (x.diffuse.val().to_u32(), x.specular.val().to_u32());
+                        if got != expected[i] {
+                            panic!(
+                            "{label}: first mismatch at normal {i} {:?} (clock {t}): rtl {got:?}, golden {:?}",
+                            normals[i], expected[i]
+                        );
+                        }
+                    }
+                    _ => {}
+                },
+            );
+        }
+    }
+}

@@ -1983,8 +1983,8 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -2001,8 +2001,7 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$back_bottom$up_q up_q(
@@ -2088,16 +2087,13 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -2122,13 +2118,13 @@ endmodule // top$pipeline$abc$estimators$0$back_bottom$a_q
 module top$pipeline$abc$estimators$0$back_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -2269,8 +2265,8 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -2287,8 +2283,7 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$back_top$up_q up_q(
@@ -2374,16 +2369,13 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -2408,13 +2400,13 @@ endmodule // top$pipeline$abc$estimators$0$back_top$a_q
 module top$pipeline$abc$estimators$0$back_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -2555,8 +2547,8 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -2573,8 +2565,7 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$back_y$up_q up_q(
@@ -2660,16 +2651,13 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -2694,13 +2682,13 @@ endmodule // top$pipeline$abc$estimators$0$back_y$a_q
 module top$pipeline$abc$estimators$0$back_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -3300,8 +3288,8 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -3318,8 +3306,7 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$front_bottom$up_q up_q(
@@ -3405,16 +3392,13 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3439,13 +3423,13 @@ endmodule // top$pipeline$abc$estimators$0$front_bottom$a_q
 module top$pipeline$abc$estimators$0$front_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -3586,8 +3570,8 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -3604,8 +3588,7 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$front_top$up_q up_q(
@@ -3691,16 +3674,13 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3725,13 +3705,13 @@ endmodule // top$pipeline$abc$estimators$0$front_top$a_q
 module top$pipeline$abc$estimators$0$front_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -3872,8 +3852,8 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -3890,8 +3870,7 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$front_y$up_q up_q(
@@ -3977,16 +3956,13 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -4011,13 +3987,13 @@ endmodule // top$pipeline$abc$estimators$0$front_y$a_q
 module top$pipeline$abc$estimators$0$front_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -5793,8 +5769,8 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -5811,8 +5787,7 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$back_bottom$up_q up_q(
@@ -5898,16 +5873,13 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -5932,13 +5904,13 @@ endmodule // top$pipeline$abc$estimators$1$back_bottom$a_q
 module top$pipeline$abc$estimators$1$back_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -6079,8 +6051,8 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -6097,8 +6069,7 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$back_top$up_q up_q(
@@ -6184,16 +6155,13 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -6218,13 +6186,13 @@ endmodule // top$pipeline$abc$estimators$1$back_top$a_q
 module top$pipeline$abc$estimators$1$back_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -6365,8 +6333,8 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -6383,8 +6351,7 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$back_y$up_q up_q(
@@ -6470,16 +6437,13 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -6504,13 +6468,13 @@ endmodule // top$pipeline$abc$estimators$1$back_y$a_q
 module top$pipeline$abc$estimators$1$back_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -7110,8 +7074,8 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -7128,8 +7092,7 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$front_bottom$up_q up_q(
@@ -7215,16 +7178,13 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7249,13 +7209,13 @@ endmodule // top$pipeline$abc$estimators$1$front_bottom$a_q
 module top$pipeline$abc$estimators$1$front_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -7396,8 +7356,8 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -7414,8 +7374,7 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$front_top$up_q up_q(
@@ -7501,16 +7460,13 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7535,13 +7491,13 @@ endmodule // top$pipeline$abc$estimators$1$front_top$a_q
 module top$pipeline$abc$estimators$1$front_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -7682,8 +7638,8 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -7700,8 +7656,7 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$front_y$up_q up_q(
@@ -7787,16 +7742,13 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7821,13 +7773,13 @@ endmodule // top$pipeline$abc$estimators$1$front_y$a_q
 module top$pipeline$abc$estimators$1$front_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -9603,8 +9555,8 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -9621,8 +9573,7 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$2$back_bottom$up_q up_q(
@@ -9708,16 +9659,13 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -9742,13 +9690,13 @@ endmodule // top$pipeline$abc$estimators$2$back_bottom$a_q
 module top$pipeline$abc$estimators$2$back_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -9889,8 +9837,8 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -9907,8 +9855,7 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$2$back_top$up_q up_q(
@@ -9994,16 +9941,13 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -10028,13 +9972,13 @@ endmodule // top$pipeline$abc$estimators$2$back_top$a_q
 module top$pipeline$abc$estimators$2$back_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -10175,8 +10119,8 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -10193,8 +10137,7 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$2$back_y$up_q up_q(
@@ -10280,16 +10223,13 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -10314,13 +10254,13 @@ endmodule // top$pipeline$abc$estimators$2$back_y$a_q
 module top$pipeline$abc$estimators$2$back_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -10920,8 +10860,8 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -10938,8 +10878,7 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$2$front_bottom$up_q up_q(
@@ -11025,16 +10964,13 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -11059,13 +10995,13 @@ endmodule // top$pipeline$abc$estimators$2$front_bottom$a_q
 module top$pipeline$abc$estimators$2$front_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -11206,8 +11142,8 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -11224,8 +11160,7 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$2$front_top$up_q up_q(
@@ -11311,16 +11246,13 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -11345,13 +11277,13 @@ endmodule // top$pipeline$abc$estimators$2$front_top$a_q
 module top$pipeline$abc$estimators$2$front_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -11492,8 +11424,8 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -11510,8 +11442,7 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$2$front_y$up_q up_q(
@@ -11597,16 +11528,13 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -11631,13 +11559,13 @@ endmodule // top$pipeline$abc$estimators$2$front_y$a_q
 module top$pipeline$abc$estimators$2$front_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -13413,8 +13341,8 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -13431,8 +13359,7 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$3$back_bottom$up_q up_q(
@@ -13518,16 +13445,13 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -13552,13 +13476,13 @@ endmodule // top$pipeline$abc$estimators$3$back_bottom$a_q
 module top$pipeline$abc$estimators$3$back_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -13699,8 +13623,8 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -13717,8 +13641,7 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$3$back_top$up_q up_q(
@@ -13804,16 +13727,13 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -13838,13 +13758,13 @@ endmodule // top$pipeline$abc$estimators$3$back_top$a_q
 module top$pipeline$abc$estimators$3$back_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -13985,8 +13905,8 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -14003,8 +13923,7 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$3$back_y$up_q up_q(
@@ -14090,16 +14009,13 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -14124,13 +14040,13 @@ endmodule // top$pipeline$abc$estimators$3$back_y$a_q
 module top$pipeline$abc$estimators$3$back_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -14730,8 +14646,8 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -14748,8 +14664,7 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$3$front_bottom$up_q up_q(
@@ -14835,16 +14750,13 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -14869,13 +14781,13 @@ endmodule // top$pipeline$abc$estimators$3$front_bottom$a_q
 module top$pipeline$abc$estimators$3$front_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -15016,8 +14928,8 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -15034,8 +14946,7 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$3$front_top$up_q up_q(
@@ -15121,16 +15032,13 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -15155,13 +15063,13 @@ endmodule // top$pipeline$abc$estimators$3$front_top$a_q
 module top$pipeline$abc$estimators$3$front_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -15302,8 +15210,8 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -15320,8 +15228,7 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$3$front_y$up_q up_q(
@@ -15407,16 +15314,13 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -15441,13 +15345,13 @@ endmodule // top$pipeline$abc$estimators$3$front_y$a_q
 module top$pipeline$abc$estimators$3$front_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin

@@ -1597,8 +1597,8 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -1615,8 +1615,7 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$back_bottom$up_q up_q(
@@ -1702,16 +1701,13 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -1736,13 +1732,13 @@ endmodule // top$pipeline$abc$estimators$0$back_bottom$a_q
 module top$pipeline$abc$estimators$0$back_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -1883,8 +1879,8 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -1901,8 +1897,7 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$back_top$up_q up_q(
@@ -1988,16 +1983,13 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -2022,13 +2014,13 @@ endmodule // top$pipeline$abc$estimators$0$back_top$a_q
 module top$pipeline$abc$estimators$0$back_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -2169,8 +2161,8 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -2187,8 +2179,7 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$back_y$up_q up_q(
@@ -2274,16 +2265,13 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -2308,13 +2296,13 @@ endmodule // top$pipeline$abc$estimators$0$back_y$a_q
 module top$pipeline$abc$estimators$0$back_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -2914,8 +2902,8 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -2932,8 +2920,7 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$front_bottom$up_q up_q(
@@ -3019,16 +3006,13 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3053,13 +3037,13 @@ endmodule // top$pipeline$abc$estimators$0$front_bottom$a_q
 module top$pipeline$abc$estimators$0$front_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -3200,8 +3184,8 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -3218,8 +3202,7 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$front_top$up_q up_q(
@@ -3305,16 +3288,13 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3339,13 +3319,13 @@ endmodule // top$pipeline$abc$estimators$0$front_top$a_q
 module top$pipeline$abc$estimators$0$front_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -3486,8 +3466,8 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -3504,8 +3484,7 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$front_y$up_q up_q(
@@ -3591,16 +3570,13 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3625,13 +3601,13 @@ endmodule // top$pipeline$abc$estimators$0$front_y$a_q
 module top$pipeline$abc$estimators$0$front_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -5836,8 +5812,8 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -5854,8 +5830,7 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$back_bottom$up_q up_q(
@@ -5941,16 +5916,13 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -5975,13 +5947,13 @@ endmodule // top$pipeline$abc$estimators$1$back_bottom$a_q
 module top$pipeline$abc$estimators$1$back_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -6122,8 +6094,8 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -6140,8 +6112,7 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$back_top$up_q up_q(
@@ -6227,16 +6198,13 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -6261,13 +6229,13 @@ endmodule // top$pipeline$abc$estimators$1$back_top$a_q
 module top$pipeline$abc$estimators$1$back_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -6408,8 +6376,8 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -6426,8 +6394,7 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$back_y$up_q up_q(
@@ -6513,16 +6480,13 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -6547,13 +6511,13 @@ endmodule // top$pipeline$abc$estimators$1$back_y$a_q
 module top$pipeline$abc$estimators$1$back_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -7153,8 +7117,8 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -7171,8 +7135,7 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$front_bottom$up_q up_q(
@@ -7258,16 +7221,13 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7292,13 +7252,13 @@ endmodule // top$pipeline$abc$estimators$1$front_bottom$a_q
 module top$pipeline$abc$estimators$1$front_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -7439,8 +7399,8 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -7457,8 +7417,7 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$front_top$up_q up_q(
@@ -7544,16 +7503,13 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7578,13 +7534,13 @@ endmodule // top$pipeline$abc$estimators$1$front_top$a_q
 module top$pipeline$abc$estimators$1$front_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -7725,8 +7681,8 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -7743,8 +7699,7 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$front_y$up_q up_q(
@@ -7830,16 +7785,13 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7864,13 +7816,13 @@ endmodule // top$pipeline$abc$estimators$1$front_y$a_q
 module top$pipeline$abc$estimators$1$front_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin

@@ -1565,8 +1565,8 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -1583,8 +1583,7 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$back_bottom$up_q up_q(
@@ -1670,16 +1669,13 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -1704,13 +1700,13 @@ endmodule // top$pipeline$abc$estimators$0$back_bottom$a_q
 module top$pipeline$abc$estimators$0$back_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -1851,8 +1847,8 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -1869,8 +1865,7 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$back_top$up_q up_q(
@@ -1956,16 +1951,13 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -1990,13 +1982,13 @@ endmodule // top$pipeline$abc$estimators$0$back_top$a_q
 module top$pipeline$abc$estimators$0$back_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -2137,8 +2129,8 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -2155,8 +2147,7 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$back_y$up_q up_q(
@@ -2242,16 +2233,13 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -2276,13 +2264,13 @@ endmodule // top$pipeline$abc$estimators$0$back_y$a_q
 module top$pipeline$abc$estimators$0$back_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -2882,8 +2870,8 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -2900,8 +2888,7 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$front_bottom$up_q up_q(
@@ -2987,16 +2974,13 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3021,13 +3005,13 @@ endmodule // top$pipeline$abc$estimators$0$front_bottom$a_q
 module top$pipeline$abc$estimators$0$front_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -3168,8 +3152,8 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -3186,8 +3170,7 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$front_top$up_q up_q(
@@ -3273,16 +3256,13 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3307,13 +3287,13 @@ endmodule // top$pipeline$abc$estimators$0$front_top$a_q
 module top$pipeline$abc$estimators$0$front_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -3454,8 +3434,8 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -3472,8 +3452,7 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$0$front_y$up_q up_q(
@@ -3559,16 +3538,13 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3593,13 +3569,13 @@ endmodule // top$pipeline$abc$estimators$0$front_y$a_q
 module top$pipeline$abc$estimators$0$front_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -5375,8 +5351,8 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -5393,8 +5369,7 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$back_bottom$up_q up_q(
@@ -5480,16 +5455,13 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -5514,13 +5486,13 @@ endmodule // top$pipeline$abc$estimators$1$back_bottom$a_q
 module top$pipeline$abc$estimators$1$back_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -5661,8 +5633,8 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -5679,8 +5651,7 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$back_top$up_q up_q(
@@ -5766,16 +5737,13 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -5800,13 +5768,13 @@ endmodule // top$pipeline$abc$estimators$1$back_top$a_q
 module top$pipeline$abc$estimators$1$back_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -5947,8 +5915,8 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -5965,8 +5933,7 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$back_y$up_q up_q(
@@ -6052,16 +6019,13 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -6086,13 +6050,13 @@ endmodule // top$pipeline$abc$estimators$1$back_y$a_q
 module top$pipeline$abc$estimators$1$back_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -6692,8 +6656,8 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -6710,8 +6674,7 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$front_bottom$up_q up_q(
@@ -6797,16 +6760,13 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -6831,13 +6791,13 @@ endmodule // top$pipeline$abc$estimators$1$front_bottom$a_q
 module top$pipeline$abc$estimators$1$front_bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -6978,8 +6938,8 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -6996,8 +6956,7 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$front_top$up_q up_q(
@@ -7083,16 +7042,13 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7117,13 +7073,13 @@ endmodule // top$pipeline$abc$estimators$1$front_top$a_q
 module top$pipeline$abc$estimators$1$front_top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -7264,8 +7220,8 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -7282,8 +7238,7 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$abc$estimators$1$front_y$up_q up_q(
@@ -7369,16 +7324,13 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7403,13 +7355,13 @@ endmodule // top$pipeline$abc$estimators$1$front_y$a_q
 module top$pipeline$abc$estimators$1$front_y$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin

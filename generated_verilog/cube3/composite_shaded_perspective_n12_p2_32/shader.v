@@ -1438,7 +1438,8 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
     localparam  wide_dot = 1'b0;
     localparam  half_ulp = 64'h2000000;
     localparam  shift = 8'h1a;
-    localparam  last = 64'h3ff;
+    localparam  last = 10'b1111111111;
+    localparam  sat_t = 64'h4008021;
     
     // Stub signals
     reg  regs$clock;
@@ -1524,12 +1525,18 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
     reg  [15:0] n2_q$d;
     wire  [15:0] n2_q$q;
     reg  n2_q$clock;
-    reg  [31:0] dot_l$d;
-    wire  [31:0] dot_l$q;
-    reg  dot_l$clock;
-    reg  [31:0] dot_h$d;
-    wire  [31:0] dot_h$q;
-    reg  dot_h$clock;
+    reg  [31:0] pair_l$d;
+    wire  [31:0] pair_l$q;
+    reg  pair_l$clock;
+    reg  [31:0] pair_h$d;
+    wire  [31:0] pair_h$q;
+    reg  pair_h$clock;
+    reg  [31:0] third_l$d;
+    wire  [31:0] third_l$q;
+    reg  third_l$clock;
+    reg  [31:0] third_h$d;
+    wire  [31:0] third_h$q;
+    reg  third_h$clock;
     reg  [15:0] rn$d;
     wire  [15:0] rn$q;
     reg  rn$clock;
@@ -1596,10 +1603,12 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
     reg  [31:0] t_ph$1;
     reg  [31:0] t_ph$2;
     reg  [15:0] n2;
+    reg  [31:0] dot_l;
+    reg  [31:0] dot_h;
     reg  [63:0] tt_l;
     reg  [63:0] tt_h;
-    reg  [63:0] i_l;
-    reg  [63:0] i_h;
+    reg  [9:0] i_l;
+    reg  [9:0] i_h;
     
     // Sub module instances
     top$pipeline$shade$0$lighting$regs regs(
@@ -1737,15 +1746,25 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
         .q(n2_q$q),
         .clock(n2_q$clock)
     );
-    top$pipeline$shade$0$lighting$dot_l dot_l(
-        .d(dot_l$d),
-        .q(dot_l$q),
-        .clock(dot_l$clock)
+    top$pipeline$shade$0$lighting$pair_l pair_l(
+        .d(pair_l$d),
+        .q(pair_l$q),
+        .clock(pair_l$clock)
     );
-    top$pipeline$shade$0$lighting$dot_h dot_h(
-        .d(dot_h$d),
-        .q(dot_h$q),
-        .clock(dot_h$clock)
+    top$pipeline$shade$0$lighting$pair_h pair_h(
+        .d(pair_h$d),
+        .q(pair_h$q),
+        .clock(pair_h$clock)
+    );
+    top$pipeline$shade$0$lighting$third_l third_l(
+        .d(third_l$d),
+        .q(third_l$q),
+        .clock(third_l$clock)
+    );
+    top$pipeline$shade$0$lighting$third_h third_h(
+        .d(third_h$d),
+        .q(third_h$q),
+        .clock(third_h$clock)
     );
     top$pipeline$shade$0$lighting$rn rn(
         .d(rn$d),
@@ -1831,8 +1850,10 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
     // Update code
     always @(*) begin
         n2_q$clock = clock;
-        dot_l$clock = clock;
-        dot_h$clock = clock;
+        pair_l$clock = clock;
+        pair_h$clock = clock;
+        third_l$clock = clock;
+        third_h$clock = clock;
         rn$clock = clock;
         d_l$clock = clock;
         d_h$clock = clock;
@@ -1850,8 +1871,10 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
         diffuse_q$clock = clock;
         specular_q$clock = clock;
         n2_q$d = n2_q$q;
-        dot_l$d = dot_l$q;
-        dot_h$d = dot_h$q;
+        pair_l$d = pair_l$q;
+        pair_h$d = pair_h$q;
+        third_l$d = third_l$q;
+        third_h$d = third_h$q;
         rn$d = rn$q;
         d_l$d = d_l$q;
         d_h$d = d_h$q;
@@ -1972,26 +1995,30 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
         if (sh_q$2$q) begin
             t_ph$2 = 'h0 - p_h$2$q;
         end
-        dot_l$d = t_pl$0 + t_pl$1 + t_pl$2;
-        dot_h$d = t_ph$0 + t_ph$1 + t_ph$2;
+        pair_l$d = t_pl$0 + t_pl$1;
+        pair_h$d = t_ph$0 + t_ph$1;
+        third_l$d = t_pl$2;
+        third_h$d = t_ph$2;
         rnorm$address = n2_q$q;
         rn$d = rnorm$data;
-        d_l$d = dot_l$q & saturation;
-        if (dot_l$q['h1f] | (dot_l$q == 'h0)) begin
+        dot_l = pair_l$q + third_l$q;
+        dot_h = pair_h$q + third_h$q;
+        d_l$d = dot_l & saturation;
+        if (dot_l['h1f] | (dot_l == 'h0)) begin
             d_l$d = 'h0;
         end
-        else if (dot_l$q > saturation) begin
+        else if ((dot_l & ~saturation) != 'h0) begin
             d_l$d = saturation;
         end
-        d_h$d = dot_h$q & saturation;
-        if (dot_h$q['h1f] | (dot_h$q == 'h0)) begin
+        d_h$d = dot_h & saturation;
+        if (dot_h['h1f] | (dot_h == 'h0)) begin
             d_h$d = 'h0;
         end
-        else if (dot_h$q > saturation) begin
+        else if ((dot_h & ~saturation) != 'h0) begin
             d_h$d = saturation;
         end
         rn_3$d = rn$q;
-        lit_3$d = ~dot_l$q['h1f] & (dot_l$q != 'h0);
+        lit_3$d = ~dot_l['h1f] & (dot_l != 'h0);
         t_l$d = d_l$q[('h0)+:(16)] * rn_3$q;
         t_h$d = d_h$q[('h0)+:(16)] * rn_3$q;
         u_l$d = 'h0;
@@ -2007,16 +2034,16 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
             tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
             tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
         end
-        i_l = ((tt_l << 'ha) - tt_l + half_ulp) >> shift;
-        if (i_l > last) begin
-            i_l = last;
+        i_l = 10'(((tt_l << 'ha) - tt_l + half_ulp) >> shift);
+        i_h = 10'(((tt_h << 'ha) - tt_h + half_ulp) >> shift);
+        idx_l$d = i_l;
+        if (tt_l >= sat_t) begin
+            idx_l$d = last;
         end
-        i_h = ((tt_h << 'ha) - tt_h + half_ulp) >> shift;
-        if (i_h > last) begin
-            i_h = last;
+        idx_h$d = i_h;
+        if (tt_h >= sat_t) begin
+            idx_h$d = last;
         end
-        idx_l$d = 10'(i_l);
-        idx_h$d = 10'(i_h);
         lit_5$d = lit_4$q;
         diffuse_table$address = idx_l$q;
         specular_table$address = idx_h$q;
@@ -2152,40 +2179,6 @@ module top$pipeline$shade$0$lighting$diffuse_table$ram(read_address,read_clock,r
        end
     end
 endmodule // top$pipeline$shade$0$lighting$diffuse_table$ram
-module top$pipeline$shade$0$lighting$dot_h(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$0$lighting$dot_h
-module top$pipeline$shade$0$lighting$dot_l(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$0$lighting$dot_l
 module top$pipeline$shade$0$lighting$idx_h(d,q,clock);
     
     // Module arguments
@@ -2509,6 +2502,40 @@ module top$pipeline$shade$0$lighting$p_l$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$lighting$p_l$2
+module top$pipeline$shade$0$lighting$pair_h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lighting$pair_h
+module top$pipeline$shade$0$lighting$pair_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lighting$pair_l
 module top$pipeline$shade$0$lighting$regs(clock,host_write,host_address,host_data,q$0,q$1);
     
     // Module arguments
@@ -3971,6 +3998,40 @@ module top$pipeline$shade$0$lighting$t_l(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$lighting$t_l
+module top$pipeline$shade$0$lighting$third_h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lighting$third_h
+module top$pipeline$shade$0$lighting$third_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lighting$third_l
 module top$pipeline$shade$0$lighting$u_h(d,q,clock);
     
     // Module arguments
@@ -7892,7 +7953,8 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
     localparam  wide_dot = 1'b0;
     localparam  half_ulp = 64'h2000000;
     localparam  shift = 8'h1a;
-    localparam  last = 64'h3ff;
+    localparam  last = 10'b1111111111;
+    localparam  sat_t = 64'h4008021;
     
     // Stub signals
     reg  regs$clock;
@@ -7978,12 +8040,18 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
     reg  [15:0] n2_q$d;
     wire  [15:0] n2_q$q;
     reg  n2_q$clock;
-    reg  [31:0] dot_l$d;
-    wire  [31:0] dot_l$q;
-    reg  dot_l$clock;
-    reg  [31:0] dot_h$d;
-    wire  [31:0] dot_h$q;
-    reg  dot_h$clock;
+    reg  [31:0] pair_l$d;
+    wire  [31:0] pair_l$q;
+    reg  pair_l$clock;
+    reg  [31:0] pair_h$d;
+    wire  [31:0] pair_h$q;
+    reg  pair_h$clock;
+    reg  [31:0] third_l$d;
+    wire  [31:0] third_l$q;
+    reg  third_l$clock;
+    reg  [31:0] third_h$d;
+    wire  [31:0] third_h$q;
+    reg  third_h$clock;
     reg  [15:0] rn$d;
     wire  [15:0] rn$q;
     reg  rn$clock;
@@ -8050,10 +8118,12 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
     reg  [31:0] t_ph$1;
     reg  [31:0] t_ph$2;
     reg  [15:0] n2;
+    reg  [31:0] dot_l;
+    reg  [31:0] dot_h;
     reg  [63:0] tt_l;
     reg  [63:0] tt_h;
-    reg  [63:0] i_l;
-    reg  [63:0] i_h;
+    reg  [9:0] i_l;
+    reg  [9:0] i_h;
     
     // Sub module instances
     top$pipeline$shade$1$lighting$regs regs(
@@ -8191,15 +8261,25 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
         .q(n2_q$q),
         .clock(n2_q$clock)
     );
-    top$pipeline$shade$1$lighting$dot_l dot_l(
-        .d(dot_l$d),
-        .q(dot_l$q),
-        .clock(dot_l$clock)
+    top$pipeline$shade$1$lighting$pair_l pair_l(
+        .d(pair_l$d),
+        .q(pair_l$q),
+        .clock(pair_l$clock)
     );
-    top$pipeline$shade$1$lighting$dot_h dot_h(
-        .d(dot_h$d),
-        .q(dot_h$q),
-        .clock(dot_h$clock)
+    top$pipeline$shade$1$lighting$pair_h pair_h(
+        .d(pair_h$d),
+        .q(pair_h$q),
+        .clock(pair_h$clock)
+    );
+    top$pipeline$shade$1$lighting$third_l third_l(
+        .d(third_l$d),
+        .q(third_l$q),
+        .clock(third_l$clock)
+    );
+    top$pipeline$shade$1$lighting$third_h third_h(
+        .d(third_h$d),
+        .q(third_h$q),
+        .clock(third_h$clock)
     );
     top$pipeline$shade$1$lighting$rn rn(
         .d(rn$d),
@@ -8285,8 +8365,10 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
     // Update code
     always @(*) begin
         n2_q$clock = clock;
-        dot_l$clock = clock;
-        dot_h$clock = clock;
+        pair_l$clock = clock;
+        pair_h$clock = clock;
+        third_l$clock = clock;
+        third_h$clock = clock;
         rn$clock = clock;
         d_l$clock = clock;
         d_h$clock = clock;
@@ -8304,8 +8386,10 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
         diffuse_q$clock = clock;
         specular_q$clock = clock;
         n2_q$d = n2_q$q;
-        dot_l$d = dot_l$q;
-        dot_h$d = dot_h$q;
+        pair_l$d = pair_l$q;
+        pair_h$d = pair_h$q;
+        third_l$d = third_l$q;
+        third_h$d = third_h$q;
         rn$d = rn$q;
         d_l$d = d_l$q;
         d_h$d = d_h$q;
@@ -8426,26 +8510,30 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
         if (sh_q$2$q) begin
             t_ph$2 = 'h0 - p_h$2$q;
         end
-        dot_l$d = t_pl$0 + t_pl$1 + t_pl$2;
-        dot_h$d = t_ph$0 + t_ph$1 + t_ph$2;
+        pair_l$d = t_pl$0 + t_pl$1;
+        pair_h$d = t_ph$0 + t_ph$1;
+        third_l$d = t_pl$2;
+        third_h$d = t_ph$2;
         rnorm$address = n2_q$q;
         rn$d = rnorm$data;
-        d_l$d = dot_l$q & saturation;
-        if (dot_l$q['h1f] | (dot_l$q == 'h0)) begin
+        dot_l = pair_l$q + third_l$q;
+        dot_h = pair_h$q + third_h$q;
+        d_l$d = dot_l & saturation;
+        if (dot_l['h1f] | (dot_l == 'h0)) begin
             d_l$d = 'h0;
         end
-        else if (dot_l$q > saturation) begin
+        else if ((dot_l & ~saturation) != 'h0) begin
             d_l$d = saturation;
         end
-        d_h$d = dot_h$q & saturation;
-        if (dot_h$q['h1f] | (dot_h$q == 'h0)) begin
+        d_h$d = dot_h & saturation;
+        if (dot_h['h1f] | (dot_h == 'h0)) begin
             d_h$d = 'h0;
         end
-        else if (dot_h$q > saturation) begin
+        else if ((dot_h & ~saturation) != 'h0) begin
             d_h$d = saturation;
         end
         rn_3$d = rn$q;
-        lit_3$d = ~dot_l$q['h1f] & (dot_l$q != 'h0);
+        lit_3$d = ~dot_l['h1f] & (dot_l != 'h0);
         t_l$d = d_l$q[('h0)+:(16)] * rn_3$q;
         t_h$d = d_h$q[('h0)+:(16)] * rn_3$q;
         u_l$d = 'h0;
@@ -8461,16 +8549,16 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
             tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
             tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
         end
-        i_l = ((tt_l << 'ha) - tt_l + half_ulp) >> shift;
-        if (i_l > last) begin
-            i_l = last;
+        i_l = 10'(((tt_l << 'ha) - tt_l + half_ulp) >> shift);
+        i_h = 10'(((tt_h << 'ha) - tt_h + half_ulp) >> shift);
+        idx_l$d = i_l;
+        if (tt_l >= sat_t) begin
+            idx_l$d = last;
         end
-        i_h = ((tt_h << 'ha) - tt_h + half_ulp) >> shift;
-        if (i_h > last) begin
-            i_h = last;
+        idx_h$d = i_h;
+        if (tt_h >= sat_t) begin
+            idx_h$d = last;
         end
-        idx_l$d = 10'(i_l);
-        idx_h$d = 10'(i_h);
         lit_5$d = lit_4$q;
         diffuse_table$address = idx_l$q;
         specular_table$address = idx_h$q;
@@ -8606,40 +8694,6 @@ module top$pipeline$shade$1$lighting$diffuse_table$ram(read_address,read_clock,r
        end
     end
 endmodule // top$pipeline$shade$1$lighting$diffuse_table$ram
-module top$pipeline$shade$1$lighting$dot_h(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$1$lighting$dot_h
-module top$pipeline$shade$1$lighting$dot_l(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$1$lighting$dot_l
 module top$pipeline$shade$1$lighting$idx_h(d,q,clock);
     
     // Module arguments
@@ -8963,6 +9017,40 @@ module top$pipeline$shade$1$lighting$p_l$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$lighting$p_l$2
+module top$pipeline$shade$1$lighting$pair_h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lighting$pair_h
+module top$pipeline$shade$1$lighting$pair_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lighting$pair_l
 module top$pipeline$shade$1$lighting$regs(clock,host_write,host_address,host_data,q$0,q$1);
     
     // Module arguments
@@ -10425,6 +10513,40 @@ module top$pipeline$shade$1$lighting$t_l(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$lighting$t_l
+module top$pipeline$shade$1$lighting$third_h(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lighting$third_h
+module top$pipeline$shade$1$lighting$third_l(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lighting$third_l
 module top$pipeline$shade$1$lighting$u_h(d,q,clock);
     
     // Module arguments

@@ -410,8 +410,8 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -428,8 +428,7 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$0$bottom$up_q up_q(
@@ -515,16 +514,13 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -549,13 +545,13 @@ endmodule // top$pipeline$lanes$units$0$bottom$a_q
 module top$pipeline$lanes$units$0$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -781,8 +777,8 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -799,8 +795,7 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$0$top$up_q up_q(
@@ -886,16 +881,13 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -920,13 +912,13 @@ endmodule // top$pipeline$lanes$units$0$top$a_q
 module top$pipeline$lanes$units$0$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -1067,8 +1059,8 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -1085,8 +1077,7 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$0$vertical$up_q up_q(
@@ -1172,16 +1163,13 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -1206,13 +1194,13 @@ endmodule // top$pipeline$lanes$units$0$vertical$a_q
 module top$pipeline$lanes$units$0$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -1489,8 +1477,8 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -1507,8 +1495,7 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$0$z$0$up_q up_q(
@@ -1594,16 +1581,13 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -1628,13 +1612,13 @@ endmodule // top$pipeline$lanes$units$0$z$0$a_q
 module top$pipeline$lanes$units$0$z$0$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -1775,8 +1759,8 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -1793,8 +1777,7 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$0$z$1$up_q up_q(
@@ -1880,16 +1863,13 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -1914,13 +1894,13 @@ endmodule // top$pipeline$lanes$units$0$z$1$a_q
 module top$pipeline$lanes$units$0$z$1$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -2061,8 +2041,8 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -2079,8 +2059,7 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$0$z$2$up_q up_q(
@@ -2166,16 +2145,13 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -2200,13 +2176,13 @@ endmodule // top$pipeline$lanes$units$0$z$2$a_q
 module top$pipeline$lanes$units$0$z$2$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -2347,8 +2323,8 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -2365,8 +2341,7 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$0$z$3$up_q up_q(
@@ -2452,16 +2427,13 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -2486,13 +2458,13 @@ endmodule // top$pipeline$lanes$units$0$z$3$a_q
 module top$pipeline$lanes$units$0$z$3$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -3014,8 +2986,8 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -3032,8 +3004,7 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$1$bottom$up_q up_q(
@@ -3119,16 +3090,13 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3153,13 +3121,13 @@ endmodule // top$pipeline$lanes$units$1$bottom$a_q
 module top$pipeline$lanes$units$1$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -3385,8 +3353,8 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -3403,8 +3371,7 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$1$top$up_q up_q(
@@ -3490,16 +3457,13 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3524,13 +3488,13 @@ endmodule // top$pipeline$lanes$units$1$top$a_q
 module top$pipeline$lanes$units$1$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -3671,8 +3635,8 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -3689,8 +3653,7 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$1$vertical$up_q up_q(
@@ -3776,16 +3739,13 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3810,13 +3770,13 @@ endmodule // top$pipeline$lanes$units$1$vertical$a_q
 module top$pipeline$lanes$units$1$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -4093,8 +4053,8 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -4111,8 +4071,7 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$1$z$0$up_q up_q(
@@ -4198,16 +4157,13 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -4232,13 +4188,13 @@ endmodule // top$pipeline$lanes$units$1$z$0$a_q
 module top$pipeline$lanes$units$1$z$0$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -4379,8 +4335,8 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -4397,8 +4353,7 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$1$z$1$up_q up_q(
@@ -4484,16 +4439,13 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -4518,13 +4470,13 @@ endmodule // top$pipeline$lanes$units$1$z$1$a_q
 module top$pipeline$lanes$units$1$z$1$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -4665,8 +4617,8 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -4683,8 +4635,7 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$1$z$2$up_q up_q(
@@ -4770,16 +4721,13 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -4804,13 +4752,13 @@ endmodule // top$pipeline$lanes$units$1$z$2$a_q
 module top$pipeline$lanes$units$1$z$2$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -4951,8 +4899,8 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -4969,8 +4917,7 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$1$z$3$up_q up_q(
@@ -5056,16 +5003,13 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -5090,13 +5034,13 @@ endmodule // top$pipeline$lanes$units$1$z$3$a_q
 module top$pipeline$lanes$units$1$z$3$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -5618,8 +5562,8 @@ module top$pipeline$lanes$units$2$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -5636,8 +5580,7 @@ module top$pipeline$lanes$units$2$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$2$bottom$up_q up_q(
@@ -5723,16 +5666,13 @@ module top$pipeline$lanes$units$2$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -5757,13 +5697,13 @@ endmodule // top$pipeline$lanes$units$2$bottom$a_q
 module top$pipeline$lanes$units$2$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -5989,8 +5929,8 @@ module top$pipeline$lanes$units$2$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -6007,8 +5947,7 @@ module top$pipeline$lanes$units$2$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$2$top$up_q up_q(
@@ -6094,16 +6033,13 @@ module top$pipeline$lanes$units$2$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -6128,13 +6064,13 @@ endmodule // top$pipeline$lanes$units$2$top$a_q
 module top$pipeline$lanes$units$2$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -6275,8 +6211,8 @@ module top$pipeline$lanes$units$2$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -6293,8 +6229,7 @@ module top$pipeline$lanes$units$2$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$2$vertical$up_q up_q(
@@ -6380,16 +6315,13 @@ module top$pipeline$lanes$units$2$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -6414,13 +6346,13 @@ endmodule // top$pipeline$lanes$units$2$vertical$a_q
 module top$pipeline$lanes$units$2$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -6697,8 +6629,8 @@ module top$pipeline$lanes$units$2$z$0(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -6715,8 +6647,7 @@ module top$pipeline$lanes$units$2$z$0(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$2$z$0$up_q up_q(
@@ -6802,16 +6733,13 @@ module top$pipeline$lanes$units$2$z$0(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -6836,13 +6764,13 @@ endmodule // top$pipeline$lanes$units$2$z$0$a_q
 module top$pipeline$lanes$units$2$z$0$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -6983,8 +6911,8 @@ module top$pipeline$lanes$units$2$z$1(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -7001,8 +6929,7 @@ module top$pipeline$lanes$units$2$z$1(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$2$z$1$up_q up_q(
@@ -7088,16 +7015,13 @@ module top$pipeline$lanes$units$2$z$1(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7122,13 +7046,13 @@ endmodule // top$pipeline$lanes$units$2$z$1$a_q
 module top$pipeline$lanes$units$2$z$1$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -7269,8 +7193,8 @@ module top$pipeline$lanes$units$2$z$2(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -7287,8 +7211,7 @@ module top$pipeline$lanes$units$2$z$2(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$2$z$2$up_q up_q(
@@ -7374,16 +7297,13 @@ module top$pipeline$lanes$units$2$z$2(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7408,13 +7328,13 @@ endmodule // top$pipeline$lanes$units$2$z$2$a_q
 module top$pipeline$lanes$units$2$z$2$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -7555,8 +7475,8 @@ module top$pipeline$lanes$units$2$z$3(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -7573,8 +7493,7 @@ module top$pipeline$lanes$units$2$z$3(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$2$z$3$up_q up_q(
@@ -7660,16 +7579,13 @@ module top$pipeline$lanes$units$2$z$3(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7694,13 +7610,13 @@ endmodule // top$pipeline$lanes$units$2$z$3$a_q
 module top$pipeline$lanes$units$2$z$3$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -8222,8 +8138,8 @@ module top$pipeline$lanes$units$3$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -8240,8 +8156,7 @@ module top$pipeline$lanes$units$3$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$3$bottom$up_q up_q(
@@ -8327,16 +8242,13 @@ module top$pipeline$lanes$units$3$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -8361,13 +8273,13 @@ endmodule // top$pipeline$lanes$units$3$bottom$a_q
 module top$pipeline$lanes$units$3$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -8593,8 +8505,8 @@ module top$pipeline$lanes$units$3$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -8611,8 +8523,7 @@ module top$pipeline$lanes$units$3$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$3$top$up_q up_q(
@@ -8698,16 +8609,13 @@ module top$pipeline$lanes$units$3$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -8732,13 +8640,13 @@ endmodule // top$pipeline$lanes$units$3$top$a_q
 module top$pipeline$lanes$units$3$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -8879,8 +8787,8 @@ module top$pipeline$lanes$units$3$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -8897,8 +8805,7 @@ module top$pipeline$lanes$units$3$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$3$vertical$up_q up_q(
@@ -8984,16 +8891,13 @@ module top$pipeline$lanes$units$3$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -9018,13 +8922,13 @@ endmodule // top$pipeline$lanes$units$3$vertical$a_q
 module top$pipeline$lanes$units$3$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -9301,8 +9205,8 @@ module top$pipeline$lanes$units$3$z$0(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -9319,8 +9223,7 @@ module top$pipeline$lanes$units$3$z$0(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$3$z$0$up_q up_q(
@@ -9406,16 +9309,13 @@ module top$pipeline$lanes$units$3$z$0(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -9440,13 +9340,13 @@ endmodule // top$pipeline$lanes$units$3$z$0$a_q
 module top$pipeline$lanes$units$3$z$0$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -9587,8 +9487,8 @@ module top$pipeline$lanes$units$3$z$1(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -9605,8 +9505,7 @@ module top$pipeline$lanes$units$3$z$1(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$3$z$1$up_q up_q(
@@ -9692,16 +9591,13 @@ module top$pipeline$lanes$units$3$z$1(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -9726,13 +9622,13 @@ endmodule // top$pipeline$lanes$units$3$z$1$a_q
 module top$pipeline$lanes$units$3$z$1$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -9873,8 +9769,8 @@ module top$pipeline$lanes$units$3$z$2(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -9891,8 +9787,7 @@ module top$pipeline$lanes$units$3$z$2(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$3$z$2$up_q up_q(
@@ -9978,16 +9873,13 @@ module top$pipeline$lanes$units$3$z$2(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -10012,13 +9904,13 @@ endmodule // top$pipeline$lanes$units$3$z$2$a_q
 module top$pipeline$lanes$units$3$z$2$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -10159,8 +10051,8 @@ module top$pipeline$lanes$units$3$z$3(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -10177,8 +10069,7 @@ module top$pipeline$lanes$units$3$z$3(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$pipeline$lanes$units$3$z$3$up_q up_q(
@@ -10264,16 +10155,13 @@ module top$pipeline$lanes$units$3$z$3(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -10298,13 +10186,13 @@ endmodule // top$pipeline$lanes$units$3$z$3$a_q
 module top$pipeline$lanes$units$3$z$3$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin

@@ -330,8 +330,8 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -348,8 +348,7 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$0$bottom$up_q up_q(
@@ -435,16 +434,13 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -469,13 +465,13 @@ endmodule // top$lanes$0$bilinear$ch$0$bottom$a_q
 module top$lanes$0$bilinear$ch$0$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -684,8 +680,8 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -702,8 +698,7 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$0$top$up_q up_q(
@@ -789,16 +784,13 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -823,13 +815,13 @@ endmodule // top$lanes$0$bilinear$ch$0$top$a_q
 module top$lanes$0$bilinear$ch$0$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -970,8 +962,8 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -988,8 +980,7 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$0$vertical$up_q up_q(
@@ -1075,16 +1066,13 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -1109,13 +1097,13 @@ endmodule // top$lanes$0$bilinear$ch$0$vertical$a_q
 module top$lanes$0$bilinear$ch$0$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -1366,8 +1354,8 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -1384,8 +1372,7 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$1$bottom$up_q up_q(
@@ -1471,16 +1458,13 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -1505,13 +1489,13 @@ endmodule // top$lanes$0$bilinear$ch$1$bottom$a_q
 module top$lanes$0$bilinear$ch$1$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -1720,8 +1704,8 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -1738,8 +1722,7 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$1$top$up_q up_q(
@@ -1825,16 +1808,13 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -1859,13 +1839,13 @@ endmodule // top$lanes$0$bilinear$ch$1$top$a_q
 module top$lanes$0$bilinear$ch$1$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -2006,8 +1986,8 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -2024,8 +2004,7 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$1$vertical$up_q up_q(
@@ -2111,16 +2090,13 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -2145,13 +2121,13 @@ endmodule // top$lanes$0$bilinear$ch$1$vertical$a_q
 module top$lanes$0$bilinear$ch$1$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -2402,8 +2378,8 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -2420,8 +2396,7 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$2$bottom$up_q up_q(
@@ -2507,16 +2482,13 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -2541,13 +2513,13 @@ endmodule // top$lanes$0$bilinear$ch$2$bottom$a_q
 module top$lanes$0$bilinear$ch$2$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -2756,8 +2728,8 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -2774,8 +2746,7 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$2$top$up_q up_q(
@@ -2861,16 +2832,13 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -2895,13 +2863,13 @@ endmodule // top$lanes$0$bilinear$ch$2$top$a_q
 module top$lanes$0$bilinear$ch$2$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -3042,8 +3010,8 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -3060,8 +3028,7 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$2$vertical$up_q up_q(
@@ -3147,16 +3114,13 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3181,13 +3145,13 @@ endmodule // top$lanes$0$bilinear$ch$2$vertical$a_q
 module top$lanes$0$bilinear$ch$2$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -3438,8 +3402,8 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -3456,8 +3420,7 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$3$bottom$up_q up_q(
@@ -3543,16 +3506,13 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3577,13 +3537,13 @@ endmodule // top$lanes$0$bilinear$ch$3$bottom$a_q
 module top$lanes$0$bilinear$ch$3$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -3792,8 +3752,8 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -3810,8 +3770,7 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$3$top$up_q up_q(
@@ -3897,16 +3856,13 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -3931,13 +3887,13 @@ endmodule // top$lanes$0$bilinear$ch$3$top$a_q
 module top$lanes$0$bilinear$ch$3$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -4078,8 +4034,8 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -4096,8 +4052,7 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$0$bilinear$ch$3$vertical$up_q up_q(
@@ -4183,16 +4138,13 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -4217,13 +4169,13 @@ endmodule // top$lanes$0$bilinear$ch$3$vertical$a_q
 module top$lanes$0$bilinear$ch$3$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -4750,8 +4702,8 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -4768,8 +4720,7 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$0$bottom$up_q up_q(
@@ -4855,16 +4806,13 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -4889,13 +4837,13 @@ endmodule // top$lanes$1$bilinear$ch$0$bottom$a_q
 module top$lanes$1$bilinear$ch$0$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -5104,8 +5052,8 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -5122,8 +5070,7 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$0$top$up_q up_q(
@@ -5209,16 +5156,13 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -5243,13 +5187,13 @@ endmodule // top$lanes$1$bilinear$ch$0$top$a_q
 module top$lanes$1$bilinear$ch$0$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -5390,8 +5334,8 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -5408,8 +5352,7 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$0$vertical$up_q up_q(
@@ -5495,16 +5438,13 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -5529,13 +5469,13 @@ endmodule // top$lanes$1$bilinear$ch$0$vertical$a_q
 module top$lanes$1$bilinear$ch$0$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -5786,8 +5726,8 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -5804,8 +5744,7 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$1$bottom$up_q up_q(
@@ -5891,16 +5830,13 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -5925,13 +5861,13 @@ endmodule // top$lanes$1$bilinear$ch$1$bottom$a_q
 module top$lanes$1$bilinear$ch$1$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -6140,8 +6076,8 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -6158,8 +6094,7 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$1$top$up_q up_q(
@@ -6245,16 +6180,13 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -6279,13 +6211,13 @@ endmodule // top$lanes$1$bilinear$ch$1$top$a_q
 module top$lanes$1$bilinear$ch$1$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -6426,8 +6358,8 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -6444,8 +6376,7 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$1$vertical$up_q up_q(
@@ -6531,16 +6462,13 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -6565,13 +6493,13 @@ endmodule // top$lanes$1$bilinear$ch$1$vertical$a_q
 module top$lanes$1$bilinear$ch$1$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -6822,8 +6750,8 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -6840,8 +6768,7 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$2$bottom$up_q up_q(
@@ -6927,16 +6854,13 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -6961,13 +6885,13 @@ endmodule // top$lanes$1$bilinear$ch$2$bottom$a_q
 module top$lanes$1$bilinear$ch$2$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -7176,8 +7100,8 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -7194,8 +7118,7 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$2$top$up_q up_q(
@@ -7281,16 +7204,13 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7315,13 +7235,13 @@ endmodule // top$lanes$1$bilinear$ch$2$top$a_q
 module top$lanes$1$bilinear$ch$2$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -7462,8 +7382,8 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -7480,8 +7400,7 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$2$vertical$up_q up_q(
@@ -7567,16 +7486,13 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7601,13 +7517,13 @@ endmodule // top$lanes$1$bilinear$ch$2$vertical$a_q
 module top$lanes$1$bilinear$ch$2$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -7858,8 +7774,8 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -7876,8 +7792,7 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$3$bottom$up_q up_q(
@@ -7963,16 +7878,13 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -7997,13 +7909,13 @@ endmodule // top$lanes$1$bilinear$ch$3$bottom$a_q
 module top$lanes$1$bilinear$ch$3$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -8212,8 +8124,8 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -8230,8 +8142,7 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$3$top$up_q up_q(
@@ -8317,16 +8228,13 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -8351,13 +8259,13 @@ endmodule // top$lanes$1$bilinear$ch$3$top$a_q
 module top$lanes$1$bilinear$ch$3$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -8498,8 +8406,8 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -8516,8 +8424,7 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$1$bilinear$ch$3$vertical$up_q up_q(
@@ -8603,16 +8510,13 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -8637,13 +8541,13 @@ endmodule // top$lanes$1$bilinear$ch$3$vertical$a_q
 module top$lanes$1$bilinear$ch$3$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -9170,8 +9074,8 @@ module top$lanes$2$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -9188,8 +9092,7 @@ module top$lanes$2$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$2$bilinear$ch$0$bottom$up_q up_q(
@@ -9275,16 +9178,13 @@ module top$lanes$2$bilinear$ch$0$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -9309,13 +9209,13 @@ endmodule // top$lanes$2$bilinear$ch$0$bottom$a_q
 module top$lanes$2$bilinear$ch$0$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -9524,8 +9424,8 @@ module top$lanes$2$bilinear$ch$0$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -9542,8 +9442,7 @@ module top$lanes$2$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$2$bilinear$ch$0$top$up_q up_q(
@@ -9629,16 +9528,13 @@ module top$lanes$2$bilinear$ch$0$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -9663,13 +9559,13 @@ endmodule // top$lanes$2$bilinear$ch$0$top$a_q
 module top$lanes$2$bilinear$ch$0$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -9810,8 +9706,8 @@ module top$lanes$2$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -9828,8 +9724,7 @@ module top$lanes$2$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$2$bilinear$ch$0$vertical$up_q up_q(
@@ -9915,16 +9810,13 @@ module top$lanes$2$bilinear$ch$0$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -9949,13 +9841,13 @@ endmodule // top$lanes$2$bilinear$ch$0$vertical$a_q
 module top$lanes$2$bilinear$ch$0$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -10206,8 +10098,8 @@ module top$lanes$2$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -10224,8 +10116,7 @@ module top$lanes$2$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$2$bilinear$ch$1$bottom$up_q up_q(
@@ -10311,16 +10202,13 @@ module top$lanes$2$bilinear$ch$1$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -10345,13 +10233,13 @@ endmodule // top$lanes$2$bilinear$ch$1$bottom$a_q
 module top$lanes$2$bilinear$ch$1$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -10560,8 +10448,8 @@ module top$lanes$2$bilinear$ch$1$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -10578,8 +10466,7 @@ module top$lanes$2$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$2$bilinear$ch$1$top$up_q up_q(
@@ -10665,16 +10552,13 @@ module top$lanes$2$bilinear$ch$1$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -10699,13 +10583,13 @@ endmodule // top$lanes$2$bilinear$ch$1$top$a_q
 module top$lanes$2$bilinear$ch$1$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -10846,8 +10730,8 @@ module top$lanes$2$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -10864,8 +10748,7 @@ module top$lanes$2$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$2$bilinear$ch$1$vertical$up_q up_q(
@@ -10951,16 +10834,13 @@ module top$lanes$2$bilinear$ch$1$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -10985,13 +10865,13 @@ endmodule // top$lanes$2$bilinear$ch$1$vertical$a_q
 module top$lanes$2$bilinear$ch$1$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -11242,8 +11122,8 @@ module top$lanes$2$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -11260,8 +11140,7 @@ module top$lanes$2$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$2$bilinear$ch$2$bottom$up_q up_q(
@@ -11347,16 +11226,13 @@ module top$lanes$2$bilinear$ch$2$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -11381,13 +11257,13 @@ endmodule // top$lanes$2$bilinear$ch$2$bottom$a_q
 module top$lanes$2$bilinear$ch$2$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -11596,8 +11472,8 @@ module top$lanes$2$bilinear$ch$2$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -11614,8 +11490,7 @@ module top$lanes$2$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$2$bilinear$ch$2$top$up_q up_q(
@@ -11701,16 +11576,13 @@ module top$lanes$2$bilinear$ch$2$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -11735,13 +11607,13 @@ endmodule // top$lanes$2$bilinear$ch$2$top$a_q
 module top$lanes$2$bilinear$ch$2$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -11882,8 +11754,8 @@ module top$lanes$2$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -11900,8 +11772,7 @@ module top$lanes$2$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$2$bilinear$ch$2$vertical$up_q up_q(
@@ -11987,16 +11858,13 @@ module top$lanes$2$bilinear$ch$2$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -12021,13 +11889,13 @@ endmodule // top$lanes$2$bilinear$ch$2$vertical$a_q
 module top$lanes$2$bilinear$ch$2$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -12278,8 +12146,8 @@ module top$lanes$2$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -12296,8 +12164,7 @@ module top$lanes$2$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$2$bilinear$ch$3$bottom$up_q up_q(
@@ -12383,16 +12250,13 @@ module top$lanes$2$bilinear$ch$3$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -12417,13 +12281,13 @@ endmodule // top$lanes$2$bilinear$ch$3$bottom$a_q
 module top$lanes$2$bilinear$ch$3$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -12632,8 +12496,8 @@ module top$lanes$2$bilinear$ch$3$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -12650,8 +12514,7 @@ module top$lanes$2$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$2$bilinear$ch$3$top$up_q up_q(
@@ -12737,16 +12600,13 @@ module top$lanes$2$bilinear$ch$3$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -12771,13 +12631,13 @@ endmodule // top$lanes$2$bilinear$ch$3$top$a_q
 module top$lanes$2$bilinear$ch$3$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -12918,8 +12778,8 @@ module top$lanes$2$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -12936,8 +12796,7 @@ module top$lanes$2$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$2$bilinear$ch$3$vertical$up_q up_q(
@@ -13023,16 +12882,13 @@ module top$lanes$2$bilinear$ch$3$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -13057,13 +12913,13 @@ endmodule // top$lanes$2$bilinear$ch$3$vertical$a_q
 module top$lanes$2$bilinear$ch$3$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -13590,8 +13446,8 @@ module top$lanes$3$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -13608,8 +13464,7 @@ module top$lanes$3$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$3$bilinear$ch$0$bottom$up_q up_q(
@@ -13695,16 +13550,13 @@ module top$lanes$3$bilinear$ch$0$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -13729,13 +13581,13 @@ endmodule // top$lanes$3$bilinear$ch$0$bottom$a_q
 module top$lanes$3$bilinear$ch$0$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -13944,8 +13796,8 @@ module top$lanes$3$bilinear$ch$0$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -13962,8 +13814,7 @@ module top$lanes$3$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$3$bilinear$ch$0$top$up_q up_q(
@@ -14049,16 +13900,13 @@ module top$lanes$3$bilinear$ch$0$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -14083,13 +13931,13 @@ endmodule // top$lanes$3$bilinear$ch$0$top$a_q
 module top$lanes$3$bilinear$ch$0$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -14230,8 +14078,8 @@ module top$lanes$3$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -14248,8 +14096,7 @@ module top$lanes$3$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$3$bilinear$ch$0$vertical$up_q up_q(
@@ -14335,16 +14182,13 @@ module top$lanes$3$bilinear$ch$0$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -14369,13 +14213,13 @@ endmodule // top$lanes$3$bilinear$ch$0$vertical$a_q
 module top$lanes$3$bilinear$ch$0$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -14626,8 +14470,8 @@ module top$lanes$3$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -14644,8 +14488,7 @@ module top$lanes$3$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$3$bilinear$ch$1$bottom$up_q up_q(
@@ -14731,16 +14574,13 @@ module top$lanes$3$bilinear$ch$1$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -14765,13 +14605,13 @@ endmodule // top$lanes$3$bilinear$ch$1$bottom$a_q
 module top$lanes$3$bilinear$ch$1$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -14980,8 +14820,8 @@ module top$lanes$3$bilinear$ch$1$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -14998,8 +14838,7 @@ module top$lanes$3$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$3$bilinear$ch$1$top$up_q up_q(
@@ -15085,16 +14924,13 @@ module top$lanes$3$bilinear$ch$1$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -15119,13 +14955,13 @@ endmodule // top$lanes$3$bilinear$ch$1$top$a_q
 module top$lanes$3$bilinear$ch$1$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -15266,8 +15102,8 @@ module top$lanes$3$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -15284,8 +15120,7 @@ module top$lanes$3$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$3$bilinear$ch$1$vertical$up_q up_q(
@@ -15371,16 +15206,13 @@ module top$lanes$3$bilinear$ch$1$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -15405,13 +15237,13 @@ endmodule // top$lanes$3$bilinear$ch$1$vertical$a_q
 module top$lanes$3$bilinear$ch$1$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -15662,8 +15494,8 @@ module top$lanes$3$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -15680,8 +15512,7 @@ module top$lanes$3$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$3$bilinear$ch$2$bottom$up_q up_q(
@@ -15767,16 +15598,13 @@ module top$lanes$3$bilinear$ch$2$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -15801,13 +15629,13 @@ endmodule // top$lanes$3$bilinear$ch$2$bottom$a_q
 module top$lanes$3$bilinear$ch$2$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -16016,8 +15844,8 @@ module top$lanes$3$bilinear$ch$2$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -16034,8 +15862,7 @@ module top$lanes$3$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$3$bilinear$ch$2$top$up_q up_q(
@@ -16121,16 +15948,13 @@ module top$lanes$3$bilinear$ch$2$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -16155,13 +15979,13 @@ endmodule // top$lanes$3$bilinear$ch$2$top$a_q
 module top$lanes$3$bilinear$ch$2$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -16302,8 +16126,8 @@ module top$lanes$3$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -16320,8 +16144,7 @@ module top$lanes$3$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$3$bilinear$ch$2$vertical$up_q up_q(
@@ -16407,16 +16230,13 @@ module top$lanes$3$bilinear$ch$2$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -16441,13 +16261,13 @@ endmodule // top$lanes$3$bilinear$ch$2$vertical$a_q
 module top$lanes$3$bilinear$ch$2$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -16698,8 +16518,8 @@ module top$lanes$3$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -16716,8 +16536,7 @@ module top$lanes$3$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$3$bilinear$ch$3$bottom$up_q up_q(
@@ -16803,16 +16622,13 @@ module top$lanes$3$bilinear$ch$3$bottom(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -16837,13 +16653,13 @@ endmodule // top$lanes$3$bilinear$ch$3$bottom$a_q
 module top$lanes$3$bilinear$ch$3$bottom$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -17052,8 +16868,8 @@ module top$lanes$3$bilinear$ch$3$top(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -17070,8 +16886,7 @@ module top$lanes$3$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$3$bilinear$ch$3$top$up_q up_q(
@@ -17157,16 +16972,13 @@ module top$lanes$3$bilinear$ch$3$top(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -17191,13 +17003,13 @@ endmodule // top$lanes$3$bilinear$ch$3$top$a_q
 module top$lanes$3$bilinear$ch$3$top$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
@@ -17338,8 +17150,8 @@ module top$lanes$3$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
-    reg  [31:0] a_q2$d;
-    wire  [31:0] a_q2$q;
+    reg  [63:0] a_q2$d;
+    wire  [63:0] a_q2$q;
     reg  a_q2$clock;
     reg  [63:0] prod_q$d;
     wire  [63:0] prod_q$q;
@@ -17356,8 +17168,7 @@ module top$lanes$3$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
-    reg  [31:0] step_up;
-    reg  [31:0] step_down;
+    reg  [63:0] sum;
     
     // Sub module instances
     top$lanes$3$bilinear$ch$3$vertical$up_q up_q(
@@ -17443,16 +17254,13 @@ module top$lanes$3$bilinear$ch$3$vertical(clock,a,b,w,y);
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
-        a_q2$d = a_in;
+        a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        step_up = 32'((prod_q$q + half) >> shift);
-        step_down = 32'((prod_q$q + half - 'h1) >> shift);
+        sum = a_q2$q - prod_q$q;
         if (up_q2$q) begin
-            y_q$d = a_q2$q + step_up;
+            sum = a_q2$q + prod_q$q;
         end
-        else begin
-            y_q$d = a_q2$q - step_down;
-        end
+        y_q$d = 32'(sum >> shift);
         y = y_q$q;
     end
     
@@ -17477,13 +17285,13 @@ endmodule // top$lanes$3$bilinear$ch$3$vertical$a_q
 module top$lanes$3$bilinear$ch$3$vertical$a_q2(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 64'h0;
     end
     
     always @(posedge clock) begin
