@@ -228,6 +228,7 @@ fn lighting_saturates_as_the_golden_model_on_any_register() {
         ([4000, -3000, 2500], [2048, 2048, 2048]),
         ([1, 0, 0], [0, -2, 0]),
     ];
+    let identity: Vec<u32> = (0..1u32 << COS_BITS).collect();
     for normal_bits in [3, 5, 6, 8] {
         let lim = (1i32 << (normal_bits - 1)) - 1;
         let mut r = Vectors::new(31 + normal_bits as u64);
@@ -252,7 +253,6 @@ fn lighting_saturates_as_the_golden_model_on_any_register() {
                 })
                 .collect();
             let mut uut = Lighting::new(16, normal_bits);
-            let identity: Vec<u32> = (0..1u32 << COS_BITS).collect();
             uut.preload(&identity, &identity);
             uut.connect_all();
             let loads = [
