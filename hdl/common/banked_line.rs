@@ -9,9 +9,11 @@
 //! without its output register) and that routing (about 5 ns) were the
 //! 256³ builds' critical path, at 101 MHz.
 //!
-//! A delay of L >= 3 is a ring of L - 1 words whose read takes two clocks,
-//! so the same L clocks at the same memory as a `RegisteredLine`. Its
-//! pointers are a pipeline of registers: `head` steps around the ring, the
+//! A delay of L >= 4 is a ring of L - 2 words whose read takes three
+//! clocks: the block RAM's, a register beside it and a second beside the
+//! logic the word feeds ([`DepthRam::relay`]), so the same L clocks as a
+//! `RegisteredLine` in a word less of memory. Its pointers are a pipeline
+//! of registers: `head` steps around the ring, the
 //! read address is `head` one clock later (one step ahead of the write),
 //! and the write address the read address one clock later. The memory's
 //! addresses come straight from flip-flops that may sit among the block
@@ -19,12 +21,13 @@
 //! drives nothing else and stays compact: with the read address in the
 //! loop, the loop followed it to the RAMs and was the shaded 256³ build's
 //! critical path (10 cells, 1.84 ns logic and 7.87 ns routing). The
-//! pointers settle three clocks after reset. The lengths 1 and 2 are a
-//! register, `short`, fed from `data_in` or from a register before it.
+//! pointers settle three clocks after reset. The lengths 1 to 3 are a
+//! register, `short`, fed from `data_in` or from one or two registers
+//! before it.
 //! With a gap in `write_enable` the output at t is still `data_in` of
 //! t - L whenever clock t - L wrote, as in a `RegisteredLine`.
 //!
-//! The pointer's bound `L - 2` and the flag for the short lengths come from
+//! The pointer's bound `L - 3` and the flags for the short lengths come from
 //! registers, one clock after `last` (the users' `last` is a register the
 //! view's `Beats` set between sweeps). Only that flag selects after the
 //! banks' registers, where a `DelayLine`'s own length-1 selection would add
@@ -32,8 +35,10 @@
 //! so that compare's inputs come from across the part).
 //!
 //! [`DepthRam::bank_registers`]: super::ram::DepthRam::bank_registers
+//! [`DepthRam::relay`]: super::ram::DepthRam::relay
 //! [`DelayLine`]: super::delay_line::DelayLine
 
+use super::lane_copy::LaneCopy;
 use super::ram::DepthRam;
 use rust_hdl::prelude::*;
 
@@ -48,8 +53,9 @@ pub struct BankedLine<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> {
     /// The delay less one, at most the longest less one.
     pub last: Signal<In, Bits<N>>,
     ram: DepthRam<D, N>,
-    /// The ring's last slot, `last - 1`.
-    bound: DFF<Bits<N>>,
+    /// The ring's last slot, `last - 2`: the line's own register (every
+    /// lane's lines have the same), as are the short lengths' flags.
+    bound: LaneCopy<Bits<N>>,
     /// The ring's pointer, the read address (`head` one clock later) and
     /// the write address (the read address one clock later).
     head: DFF<Bits<N>>,
@@ -58,15 +64,17 @@ pub struct BankedLine<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> {
     next: Signal<Local, Bits<N>>,
     /// The built ring's last slot: the pointer's bound.
     longest_last: Constant<Bits<N>>,
-    /// Built for 3 or more (a line built for 2 or less is `short` alone).
+    /// Built for 4 or more (a line built for 3 or less is `short` alone).
     has_ring: Constant<Bit>,
-    /// The delays of 1 and 2: `short` takes `data_in` (1) or `one`, the
-    /// last word written (2); `is_short` and `is_one` say which `last` asks
-    /// for.
+    /// The delays of 1 to 3: `short` takes `data_in` (1), `one`, the last
+    /// word written (2), or `two`, `one` a clock later (3); `is_short`,
+    /// `is_one` and `is_two` say which `last` asks for.
     one: DFF<D>,
+    two: DFF<D>,
     short: DFF<D>,
-    is_short: DFF<Bit>,
-    is_one: DFF<Bit>,
+    is_short: LaneCopy<Bit>,
+    is_one: LaneCopy<Bit>,
+    is_two: LaneCopy<Bit>,
     mask: Constant<D>,
 }
 
@@ -78,9 +86,9 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> BankedLine<D, N> {
             longest >= 1 && longest < 1 << N,
             "a delay line with an {N}-bit pointer is 1 to 2^{N} - 1 clocks long, not {longest}"
         );
-        // A ring of L - 1 words; a line built for 2 or less needs none (a
+        // A ring of L - 2 words; a line built for 3 or less needs none (a
         // 2-word stub).
-        let words = (longest.max(3) - 1).max(2);
+        let words = (longest.max(4) - 2).max(2);
         BankedLine {
             clock: Default::default(),
             data_in: Default::default(),
@@ -89,18 +97,21 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> BankedLine<D, N> {
             last: Default::default(),
             ram: DepthRam::with_words(words)
                 .fields(fields, mask)
-                .bank_registers(),
+                .bank_registers()
+                .relay(),
             bound: Default::default(),
             head: Default::default(),
             rd: Default::default(),
             ptr: Default::default(),
             next: Default::default(),
             longest_last: Constant::new(((words - 1) as u64).to_bits()),
-            has_ring: Constant::new(longest >= 3),
+            has_ring: Constant::new(longest >= 4),
             one: Default::default(),
+            two: Default::default(),
             short: Default::default(),
             is_short: Default::default(),
             is_one: Default::default(),
+            is_two: Default::default(),
             mask: Constant::new(mask),
         }
     }
@@ -118,12 +129,13 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> BankedLine<D, N> {
 impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> Logic for BankedLine<D, N> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, bound, head, rd, ptr, one, short, is_short, is_one);
+        dff_setup!(self, clock, bound, head, rd, ptr, one, two, short, is_short, is_one, is_two);
         self.ram.read_clock.next = self.clock.val();
         self.ram.write_clock.next = self.clock.val();
-        self.bound.d.next = self.last.val() - 1;
-        self.is_short.d.next = self.last.val() < 2;
+        self.bound.d.next = self.last.val() - 2;
+        self.is_short.d.next = self.last.val() < 3;
         self.is_one.d.next = self.last.val() == 0;
+        self.is_two.d.next = self.last.val() == 1;
         // The ring: the read address one step ahead of the write address.
         self.next.next = self.head.q.val() + 1;
         if (self.head.q.val() >= self.bound.q.val())
@@ -143,7 +155,11 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> Logic for BankedLi
         if self.write_enable.val() {
             self.one.d.next = self.data_in.val() & self.mask.val();
         }
-        self.short.d.next = self.one.q.val();
+        self.two.d.next = self.one.q.val();
+        self.short.d.next = self.two.q.val();
+        if self.is_two.q.val() {
+            self.short.d.next = self.one.q.val();
+        }
         if self.is_one.q.val() {
             self.short.d.next = self.short.q.val();
             if self.write_enable.val() {
@@ -229,11 +245,22 @@ mod tests {
 
     #[test]
     fn output_is_the_input_length_clocks_back() {
-        for length in [1, 2, 3, 4, 7, 33] {
+        for length in [1, 2, 3, 4, 5, 7, 33] {
             check(length, length);
         }
         // Lines built longer, set shorter at run time.
-        for (longest, length) in [(2, 1), (3, 1), (3, 2), (7, 1), (7, 2), (7, 3), (33, 20)] {
+        for (longest, length) in [
+            (2, 1),
+            (3, 1),
+            (3, 2),
+            (4, 3),
+            (5, 4),
+            (7, 1),
+            (7, 2),
+            (7, 3),
+            (7, 4),
+            (33, 20),
+        ] {
             check(longest, length);
         }
     }

@@ -9,12 +9,15 @@
 //! host's [`regs`] and [`table`]s (written between frames), the [`shader`]
 //! (classification, with the [`gradient_bin`] of gradient opacity and its
 //! [`square`]s, and the [`lighting`] of the [`normal_quantizer`]'s normal),
-//! and [`lanes`], the lane counts the RTL is built for.
+//! [`lanes`], the lane counts the RTL is built for, and [`lane_copy`], a
+//! lane's own register of a frame's value, never merged with its
+//! neighbours'.
 
 pub mod banked_line;
 pub mod delay_line;
 pub mod depth_rom;
 pub mod gradient_bin;
+pub mod lane_copy;
 pub mod lanes;
 pub mod lerp;
 pub mod lighting;

@@ -34,6 +34,7 @@
 
 use super::config::PipelineConfig;
 use crate::common::banked_line::BankedLine;
+use crate::common::lane_copy::LaneCopy;
 use rust_hdl::prelude::*;
 
 /// The chain's delay lines, in clocks (`line_a` to `line_d`; a line of 1 is
@@ -98,10 +99,11 @@ pub struct AbcGradient<const H: usize> {
     xp: Signal<Local, Bits<16>>,
     p_mask: Constant<Bits<16>>,
     enabled: Constant<Bit>,
-    /// The lines' lengths less one: S - B - 2, B - 1 (twice), S - B - 1.
-    last_a: DFF<Bits<H>>,
-    last_b: DFF<Bits<H>>,
-    last_d: DFF<Bits<H>>,
+    /// The lines' lengths less one: S - B - 2, B - 1 (twice), S - B - 1;
+    /// the lane's own registers.
+    last_a: LaneCopy<Bits<H>>,
+    last_b: LaneCopy<Bits<H>>,
+    last_d: LaneCopy<Bits<H>>,
 }
 
 impl<const H: usize> AbcGradient<H> {

@@ -22,6 +22,7 @@
 
 use super::config::{tap_offset, PipelineConfig, RESULT_AT, TAPS};
 use crate::common::banked_line::BankedLine;
+use crate::common::lane_copy::LaneCopy;
 use rust_hdl::prelude::*;
 
 /// One lane's compositing-buffer history (`H`-bit delay-line pointers).
@@ -45,9 +46,10 @@ pub struct BufferRows<const H: usize> {
     /// One-hot: the candidate each tap takes.
     pick: [Constant<Bits<15>>; 9],
     sel: [Signal<Local, Bits<64>>; 9],
-    /// The lines' lengths less one, from `Beats`: S - B - r - 5 and B - 1.
-    ring_last: DFF<Bits<H>>,
-    beam_last: DFF<Bits<H>>,
+    /// The lines' lengths less one, from `Beats`: S - B - r - 5 and B - 1;
+    /// the lane's own registers.
+    ring_last: LaneCopy<Bits<H>>,
+    beam_last: LaneCopy<Bits<H>>,
     ring_less: Constant<Bits<H>>,
 }
 

@@ -146,6 +146,16 @@ pub struct Cfb<const P: usize, const A: usize> {
     nb_left: DFF<Bits<16>>,
     nbeam_left: DFF<Bits<16>>,
     ns_left: DFF<Bits<16>>,
+    /// Each counter's wrap as a register of its own, `left == 0`, set
+    /// beside the count (`left == 1` as it steps, the span's `== 0` as it
+    /// reloads): the three counters' enables are an AND of flip-flops, no
+    /// 16-bit zero test lies before them (the perspective build's critical
+    /// path ran from `nb_left` through those tests to the slice counter).
+    nb_end: DFF<Bit>,
+    nbeam_end: DFF<Bit>,
+    ns_end: DFF<Bit>,
+    ny_last_zero: DFF<Bit>,
+    b_last_zero: DFF<Bit>,
 }
 
 impl<const P: usize, const A: usize> Cfb<P, A> {
@@ -237,6 +247,11 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
             nb_left: Default::default(),
             nbeam_left: Default::default(),
             ns_left: Default::default(),
+            nb_end: Default::default(),
+            nbeam_end: Default::default(),
+            ns_end: Default::default(),
+            ny_last_zero: Default::default(),
+            b_last_zero: Default::default(),
         }
     }
 }
@@ -245,9 +260,42 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, running, ns_c, nbeam_c, nb_c, valid_q, ns_q, nbeam_q, nb_q, run_d1,
-            run_d2, run_d3, run_d4, ns_d1, ns_d2, ns_d3, ns_d4, nbeam_d1, nbeam_d2, nbeam_d3,
-            nbeam_d4, nb_d1, nb_d2, nb_d3, nb_d4, ny_last, b_last, nb_left, nbeam_left, ns_left
+            self,
+            clock,
+            running,
+            ns_c,
+            nbeam_c,
+            nb_c,
+            valid_q,
+            ns_q,
+            nbeam_q,
+            nb_q,
+            run_d1,
+            run_d2,
+            run_d3,
+            run_d4,
+            ns_d1,
+            ns_d2,
+            ns_d3,
+            ns_d4,
+            nbeam_d1,
+            nbeam_d2,
+            nbeam_d3,
+            nbeam_d4,
+            nb_d1,
+            nb_d2,
+            nb_d3,
+            nb_d4,
+            ny_last,
+            b_last,
+            nb_left,
+            nbeam_left,
+            ns_left,
+            nb_end,
+            nbeam_end,
+            ns_end,
+            ny_last_zero,
+            b_last_zero
         );
         self.lead.clock.next = self.clock.val();
         self.lead.reset.next = self.reset.val();
@@ -288,6 +336,8 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
         self.b_m1.next = self.beats.val().get_bits::<16>(32) - 1;
         self.ny_last.d.next = self.ny_m1.val();
         self.b_last.d.next = self.b_m1.val();
+        self.ny_last_zero.d.next = self.ny_m1.val() == 0;
+        self.b_last_zero.d.next = self.b_m1.val() == 0;
         for k in 0..P {
             self.lanes[k].clock.next = self.clock.val();
             self.lanes[k].dims.next = self.dims.val();
@@ -305,9 +355,11 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
             self.lanes[k].a_n_s.next = self.e_ns.val();
             self.lanes[k].a_n_beam.next = self.e_nbeam.val();
             self.lanes[k].a_n_b.next = self.e_nb.val();
+            self.lanes[k].c_n_s.next = self.ns_d3.q.val();
+            self.lanes[k].c_n_beam.next = self.nbeam_d3.q.val();
+            self.lanes[k].c_n_b.next = self.nb_d3.q.val();
             self.lanes[k].n_s.next = self.ns_d4.q.val();
             self.lanes[k].n_beam.next = self.nbeam_d4.q.val();
-            self.lanes[k].n_b.next = self.nb_d4.q.val();
             self.lanes[k].load_enable.next = self.load_enable.val();
             self.lanes[k].load_module.next = self.load_module.val();
             self.lanes[k].load_address.next = self.load_address.val();
@@ -344,23 +396,31 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
             self.nb_left.d.next = self.b_m1.val();
             self.nbeam_left.d.next = self.ny_m1.val();
             self.ns_left.d.next = self.z1.val() - self.z0.val();
+            self.nb_end.d.next = self.b_m1.val() == 0;
+            self.nbeam_end.d.next = self.ny_m1.val() == 0;
+            self.ns_end.d.next = self.z1.val() == self.z0.val();
         }
         if self.running.q.val() {
-            if self.nb_left.q.val() != 0 {
+            if !self.nb_end.q.val() {
                 self.nb_c.d.next = self.nb_c.q.val() + 1;
                 self.nb_left.d.next = self.nb_left.q.val() - 1;
+                self.nb_end.d.next = self.nb_left.q.val() == 1;
             } else {
                 self.nb_c.d.next = 0.into();
                 self.nb_left.d.next = self.b_last.q.val();
-                if self.nbeam_left.q.val() != 0 {
+                self.nb_end.d.next = self.b_last_zero.q.val();
+                if !self.nbeam_end.q.val() {
                     self.nbeam_c.d.next = self.nbeam_c.q.val() + 1;
                     self.nbeam_left.d.next = self.nbeam_left.q.val() - 1;
+                    self.nbeam_end.d.next = self.nbeam_left.q.val() == 1;
                 } else {
                     self.nbeam_c.d.next = 0.into();
                     self.nbeam_left.d.next = self.ny_last.q.val();
-                    if self.ns_left.q.val() != 0 {
+                    self.nbeam_end.d.next = self.ny_last_zero.q.val();
+                    if !self.ns_end.q.val() {
                         self.ns_c.d.next = self.ns_c.q.val() + 1;
                         self.ns_left.d.next = self.ns_left.q.val() - 1;
+                        self.ns_end.d.next = self.ns_left.q.val() == 1;
                     } else {
                         self.running.d.next = false;
                     }

@@ -8,6 +8,7 @@
 use super::config::PipelineConfig;
 use super::divider::Divider;
 use crate::common::bits16;
+use crate::common::lane_copy::LaneCopy;
 use crate::common::ram::DepthRam;
 use rust_hdl::prelude::*;
 
@@ -29,17 +30,21 @@ pub struct CfbLane<const A: usize> {
     /// Shared counters N_s (slice z), N_B (beam y) and N_b (partial beam)
     /// as issued, for the perspective divider; for the address (the same,
     /// or `counter_lead::LEAD` clocks later with a divider); and
-    /// `ADDRESS_STAGES + 1` clocks after the address's, for the control
-    /// computed beside the memory read's output register.
+    /// `ADDRESS_STAGES` clocks after the address's (`c_`), a clock ahead of
+    /// the control computed beside the memory read's output register, for
+    /// its skewed x and padding test; N_s and N_B a clock later, for the
+    /// rest of the control.
     pub d_n_s: Signal<In, Bits<16>>,
     pub d_n_beam: Signal<In, Bits<16>>,
     pub d_n_b: Signal<In, Bits<16>>,
     pub a_n_s: Signal<In, Bits<16>>,
     pub a_n_beam: Signal<In, Bits<16>>,
     pub a_n_b: Signal<In, Bits<16>>,
+    pub c_n_s: Signal<In, Bits<16>>,
+    pub c_n_beam: Signal<In, Bits<16>>,
+    pub c_n_b: Signal<In, Bits<16>>,
     pub n_s: Signal<In, Bits<16>>,
     pub n_beam: Signal<In, Bits<16>>,
-    pub n_b: Signal<In, Bits<16>>,
     /// Load port: a write when `load_enable` and `load_module` names this lane.
     pub load_enable: Signal<In, Bit>,
     pub load_module: Signal<In, Bits<8>>,
@@ -80,36 +85,40 @@ pub struct CfbLane<const A: usize> {
     perspective: Constant<Bit>,
     external: Constant<Bit>,
     // The registers' fields.
-    nx: Signal<Local, Bits<16>>,
-    /// `n - 1` of each axis and the base plane's border `z1 - z0`,
-    /// registered from `Dims` and `Slices` as the increments are: no
-    /// subtraction from a view register lies before the exit-face compares
-    /// and the base-plane sums.
-    nx_last: DFF<Bits<16>>,
-    ny_last: DFF<Bits<16>>,
-    nz_last: DFF<Bits<16>>,
+    /// `n_x`, and `n - 1` of each axis and the base plane's border `z1 -
+    /// z0`, registered from `Dims` and `Slices` as the increments are (the
+    /// lane's own copies, placed beside it): no subtraction from a view
+    /// register lies before the padding test, the exit-face compares and
+    /// the base-plane sums.
+    nx: LaneCopy<Bits<16>>,
+    nx_last: LaneCopy<Bits<16>>,
+    ny_last: LaneCopy<Bits<16>>,
+    nz_last: LaneCopy<Bits<16>>,
     z0: Signal<Local, Bits<16>>,
     z1: Signal<Local, Bits<16>>,
-    border: DFF<Bits<16>>,
+    border: LaneCopy<Bits<16>>,
     u_from: Signal<Local, Bits<2>>,
     v_from: Signal<Local, Bits<2>>,
     w_from: Signal<Local, Bits<2>>,
-    b_u: Signal<Local, Bits<16>>,
-    /// `b_u * n_v`, split into 16-bit halves for two 16x16 multipliers.
-    slab_lo: Signal<Local, Bits<16>>,
-    slab_hi: Signal<Local, Bits<16>>,
+    /// The strides `b_u` and `b_u * n_v` (split into 16-bit halves for two
+    /// 16x16 multipliers), the lane's own copies of `Address`: the stride
+    /// products' operands come from beside their multipliers, not from the
+    /// register file across the part.
+    b_u: LaneCopy<Bits<16>>,
+    slab_lo: LaneCopy<Bits<16>>,
+    slab_hi: LaneCopy<Bits<16>>,
     dx_abs: Signal<Local, Bits<64>>,
     dy_abs: Signal<Local, Bits<64>>,
     /// The parallel view's increments, registered from `Dx` and `Dy`: they
     /// hold for a frame, and the control reads them `ADDRESS_STAGES + 1` clocks
     /// after the start at the earliest. Sign (when nonzero), magnitude, and
     /// positive-and-nonzero.
-    par_dxn: DFF<Bit>,
-    par_dxm: DFF<Bits<32>>,
-    par_dx_pos: DFF<Bit>,
-    par_dyn: DFF<Bit>,
-    par_dym: DFF<Bits<32>>,
-    par_dy_pos: DFF<Bit>,
+    par_dxn: LaneCopy<Bit>,
+    par_dxm: LaneCopy<Bits<32>>,
+    par_dx_pos: LaneCopy<Bit>,
+    par_dyn: LaneCopy<Bit>,
+    par_dym: LaneCopy<Bits<32>>,
+    par_dy_pos: LaneCopy<Bit>,
     /// Perspective views: the sight-ray increments, from the issued counters.
     div: Divider,
     dxn: Signal<Local, Bit>,
@@ -127,6 +136,13 @@ pub struct CfbLane<const A: usize> {
     dym_q: DFF<Bits<16>>,
     inval_q: DFF<Bit>,
     halo_q: DFF<Bit>,
+    /// The control's skewed x and padding test, from the counters a clock
+    /// before the control's, registered: the test's compare lies before
+    /// the register, its fan-out (the increments' clear, the exit faces)
+    /// after.
+    c_xc: Signal<Local, Bits<16>>,
+    xc_r: DFF<Bits<16>>,
+    pad_r: DFF<Bit>,
     xc: Signal<Local, Bits<16>>,
     // The address pipeline: the issued counters' skewed x and dataset
     // (u, v, w), registered; the products, registered; their sum.
@@ -143,7 +159,22 @@ pub struct CfbLane<const A: usize> {
     addr: DFF<Bits<32>>,
     is_pad: Signal<Local, Bit>,
     face_c: Signal<Local, Bits<3>>,
-    depth: Signal<Local, Bits<16>>,
+    /// The exit-face tests and the base-plane sums, from the counters a
+    /// clock ahead, registered beside `xc_r`: the control's clock only
+    /// chooses among them by the increments' signs. `depth` is `z1 - n_s`;
+    /// the sums are `border + x`, `border + x + depth`, `border - depth`,
+    /// `border + y` and `border + y + depth`.
+    c_depth: Signal<Local, Bits<16>>,
+    x_last_r: DFF<Bit>,
+    x_first_r: DFF<Bit>,
+    y_last_r: DFF<Bit>,
+    y_first_r: DFF<Bit>,
+    s_last_r: DFF<Bit>,
+    bx_at_r: DFF<Bits<16>>,
+    bx_far_r: DFF<Bits<16>>,
+    b_near_r: DFF<Bits<16>>,
+    by_at_r: DFF<Bits<16>>,
+    by_far_r: DFF<Bits<16>>,
     bx: Signal<Local, Bits<16>>,
     by: Signal<Local, Bits<16>>,
     x_q: DFF<Bits<16>>,
@@ -184,9 +215,11 @@ impl<const A: usize> CfbLane<A> {
             a_n_s: Default::default(),
             a_n_beam: Default::default(),
             a_n_b: Default::default(),
+            c_n_s: Default::default(),
+            c_n_beam: Default::default(),
+            c_n_b: Default::default(),
             n_s: Default::default(),
             n_beam: Default::default(),
-            n_b: Default::default(),
             load_enable: Default::default(),
             load_module: Default::default(),
             load_address: Default::default(),
@@ -270,6 +303,9 @@ impl<const A: usize> CfbLane<A> {
             dym_q: Default::default(),
             inval_q: Default::default(),
             halo_q: Default::default(),
+            c_xc: Default::default(),
+            xc_r: Default::default(),
+            pad_r: Default::default(),
             xc: Default::default(),
             a_xc: Default::default(),
             a_u: Default::default(),
@@ -284,7 +320,17 @@ impl<const A: usize> CfbLane<A> {
             addr: Default::default(),
             is_pad: Default::default(),
             face_c: Default::default(),
-            depth: Default::default(),
+            c_depth: Default::default(),
+            x_last_r: Default::default(),
+            x_first_r: Default::default(),
+            y_last_r: Default::default(),
+            y_first_r: Default::default(),
+            s_last_r: Default::default(),
+            bx_at_r: Default::default(),
+            bx_far_r: Default::default(),
+            b_near_r: Default::default(),
+            by_at_r: Default::default(),
+            by_far_r: Default::default(),
             bx: Default::default(),
             by: Default::default(),
             x_q: Default::default(),
@@ -318,11 +364,13 @@ impl<const A: usize> Logic for CfbLane<A> {
         dff_setup!(
             self, clock, x_q, y_q, z_q, addr_q, addr_q2, pad_q, ext_q, sr_q, edge_q, face_q, bx_q,
             by_q, dxn_q, dxm_q, dyn_q, dym_q, inval_q, halo_q, a_u, a_v, a_w, a_pad, m_u, m_v,
-            m_w_lo, m_w_hi, m_pad, addr, nx_last, ny_last, nz_last, border, par_dxn, par_dxm,
-            par_dx_pos, par_dyn, par_dym, par_dy_pos
+            m_w_lo, m_w_hi, m_pad, addr, xc_r, pad_r, x_last_r, x_first_r, y_last_r, y_first_r,
+            s_last_r, bx_at_r, bx_far_r, b_near_r, by_at_r, by_far_r, nx, b_u, slab_lo, slab_hi,
+            nx_last, ny_last, nz_last, border, par_dxn, par_dxm, par_dx_pos, par_dyn, par_dym,
+            par_dy_pos
         );
         // The view registers' fields.
-        self.nx.next = self.dims.val().get_bits::<16>(0);
+        self.nx.d.next = self.dims.val().get_bits::<16>(0);
         self.nx_last.d.next = self.dims.val().get_bits::<16>(0) - 1;
         self.ny_last.d.next = self.dims.val().get_bits::<16>(16) - 1;
         self.nz_last.d.next = self.dims.val().get_bits::<16>(32) - 1;
@@ -333,9 +381,9 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.u_from.next = self.axes.val().get_bits::<2>(0);
         self.v_from.next = self.axes.val().get_bits::<2>(2);
         self.w_from.next = self.axes.val().get_bits::<2>(4);
-        self.b_u.next = self.address_reg.val().get_bits::<16>(0);
-        self.slab_lo.next = self.address_reg.val().get_bits::<16>(16);
-        self.slab_hi.next = self.address_reg.val().get_bits::<16>(32);
+        self.b_u.d.next = self.address_reg.val().get_bits::<16>(0);
+        self.slab_lo.d.next = self.address_reg.val().get_bits::<16>(16);
+        self.slab_hi.d.next = self.address_reg.val().get_bits::<16>(32);
         self.dx_abs.next = self.dx.val();
         if self.dx.val().get_bit(63) {
             self.dx_abs.next = 0 - self.dx.val();
@@ -365,7 +413,7 @@ impl<const A: usize> Logic for CfbLane<A> {
         // and pipeline to dataset coordinates.
         self.a_xc.next = (self.a_n_b.val() << self.p_shift.val())
             | ((self.lane.val() - self.a_n_beam.val() - self.a_n_s.val()) & self.p_mask.val());
-        self.a_pad.d.next = self.a_xc.val() >= self.nx.val();
+        self.a_pad.d.next = self.a_xc.val() >= self.nx.q.val();
         self.a_u.d.next = self.a_xc.val();
         if self.u_from.val() == 1 {
             self.a_u.d.next = self.a_n_beam.val();
@@ -389,9 +437,9 @@ impl<const A: usize> Logic for CfbLane<A> {
         }
         // 2: the products of i = u div P + v*b + w*b*n_v.
         self.m_u.d.next = bit_cast::<32, 16>(self.a_u.q.val()) >> self.p_shift.val();
-        self.m_v.d.next = self.a_v.q.val() * self.b_u.val();
-        self.m_w_lo.d.next = self.a_w.q.val() * self.slab_lo.val();
-        self.m_w_hi.d.next = self.a_w.q.val() * self.slab_hi.val();
+        self.m_v.d.next = self.a_v.q.val() * self.b_u.q.val();
+        self.m_w_lo.d.next = self.a_w.q.val() * self.slab_lo.q.val();
+        self.m_w_hi.d.next = self.a_w.q.val() * self.slab_hi.q.val();
         self.m_pad.d.next = self.a_pad.q.val();
         // 3: their sum, registered apart from the RAM's address register
         // (it fans out to every block RAM of the module).
@@ -402,10 +450,25 @@ impl<const A: usize> Logic for CfbLane<A> {
         }
         self.memory.read_address.next = bit_cast::<A, 32>(self.addr.q.val());
         self.ext_addr.next = self.addr.q.val();
-        // The control, from the delayed counters: the same skew.
-        self.xc.next = (self.n_b.val() << self.p_shift.val())
-            | ((self.lane.val() - self.n_beam.val() - self.n_s.val()) & self.p_mask.val());
-        self.is_pad.next = self.xc.val() >= self.nx.val();
+        // The control, from the delayed counters: the same skew, and the
+        // padding test, a clock ahead and registered.
+        self.c_xc.next = (self.c_n_b.val() << self.p_shift.val())
+            | ((self.lane.val() - self.c_n_beam.val() - self.c_n_s.val()) & self.p_mask.val());
+        self.xc_r.d.next = self.c_xc.val();
+        self.pad_r.d.next = self.c_xc.val() >= self.nx.q.val();
+        self.xc.next = self.xc_r.q.val();
+        self.is_pad.next = self.pad_r.q.val();
+        self.c_depth.next = self.z1.val() - self.c_n_s.val();
+        self.x_last_r.d.next = self.c_xc.val() == self.nx_last.q.val();
+        self.x_first_r.d.next = self.c_xc.val() == 0;
+        self.y_last_r.d.next = self.c_n_beam.val() == self.ny_last.q.val();
+        self.y_first_r.d.next = self.c_n_beam.val() == 0;
+        self.s_last_r.d.next = self.c_n_s.val() == self.z1.val();
+        self.bx_at_r.d.next = self.border.q.val() + self.c_xc.val();
+        self.bx_far_r.d.next = self.border.q.val() + self.c_xc.val() + self.c_depth.val();
+        self.b_near_r.d.next = self.border.q.val() - self.c_depth.val();
+        self.by_at_r.d.next = self.border.q.val() + self.c_n_beam.val();
+        self.by_far_r.d.next = self.border.q.val() + self.c_n_beam.val() + self.c_depth.val();
         // Sight-ray increments: frame registers, or the per-voxel divider.
         self.div.clock.next = self.clock.val();
         self.div.n_s.next = self.d_n_s.val();
@@ -442,26 +505,25 @@ impl<const A: usize> Logic for CfbLane<A> {
         }
         // Exit face and base-plane address.
         self.face_c.next = 0.into();
-        self.depth.next = self.z1.val() - self.n_s.val();
-        self.bx.next = self.border.q.val() + self.xc.val();
-        self.by.next = self.border.q.val() + self.n_beam.val();
-        if (self.xc.val() == self.nx_last.q.val()) & self.dx_pos.val() {
+        self.bx.next = self.bx_at_r.q.val();
+        self.by.next = self.by_at_r.q.val();
+        if self.x_last_r.q.val() & self.dx_pos.val() {
             self.face_c.next = 2.into();
-            self.bx.next = self.border.q.val() + self.xc.val() + self.depth.val();
-        } else if (self.xc.val() == 0) & self.dx_neg_nz.val() {
+            self.bx.next = self.bx_far_r.q.val();
+        } else if self.x_first_r.q.val() & self.dx_neg_nz.val() {
             self.face_c.next = 3.into();
-            self.bx.next = self.border.q.val() - self.depth.val();
-        } else if (self.n_beam.val() == self.ny_last.q.val()) & self.dy_pos.val() {
+            self.bx.next = self.b_near_r.q.val();
+        } else if self.y_last_r.q.val() & self.dy_pos.val() {
             self.face_c.next = 4.into();
-            self.by.next = self.border.q.val() + self.n_beam.val() + self.depth.val();
-        } else if (self.n_beam.val() == 0) & self.dy_neg_nz.val() {
+            self.by.next = self.by_far_r.q.val();
+        } else if self.y_first_r.q.val() & self.dy_neg_nz.val() {
             self.face_c.next = 5.into();
-            self.by.next = self.border.q.val() - self.depth.val();
+            self.by.next = self.b_near_r.q.val();
         }
-        if self.n_s.val() == self.z1.val() {
+        if self.s_last_r.q.val() {
             self.face_c.next = 1.into();
-            self.bx.next = self.border.q.val() + self.xc.val();
-            self.by.next = self.border.q.val() + self.n_beam.val();
+            self.bx.next = self.bx_at_r.q.val();
+            self.by.next = self.by_at_r.q.val();
         }
         if self.is_pad.val() | self.inval.val() {
             self.face_c.next = 0.into();
@@ -478,11 +540,11 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.pad_q.d.next = self.is_pad.val();
         self.sr_q.d.next = self.n_s.val() == self.z0.val();
         self.edge_q.d.next = self.is_pad.val()
-            | (self.xc.val() == 0)
-            | (self.n_beam.val() == 0)
+            | self.x_first_r.q.val()
+            | self.y_first_r.q.val()
             | (self.n_s.val() == 0)
-            | (self.xc.val() == self.nx_last.q.val())
-            | (self.n_beam.val() == self.ny_last.q.val())
+            | self.x_last_r.q.val()
+            | self.y_last_r.q.val()
             | (self.n_s.val() == self.nz_last.q.val());
         self.face_q.d.next = self.face_c.val();
         self.bx_q.d.next = self.bx.val();

@@ -499,14 +499,14 @@ impl PipelineConfig {
 
     /// Bits of block RAM the pipelines' buffers hold (not the CFB's
     /// voxel memory), as built: per lane the compositing-buffer history and
-    /// the gradient unit's B and C slices (a line of L keeps L - 1 words and
-    /// its output register; a line of 2 or 1 is registers alone).
+    /// the gradient unit's B and C slices (a line of L keeps L - 2 words and
+    /// two registers after them; a line of 3 or less is registers alone).
     pub fn buffer_bits(&self) -> u64 {
         let lane: u64 = self
             .lines()
             .iter()
-            .filter(|l| l.0 > 2)
-            .map(|&(l, bits)| (l as u64 - 1) * bits)
+            .filter(|l| l.0 > 3)
+            .map(|&(l, bits)| (l as u64 - 2) * bits)
             .sum();
         self.p as u64 * lane
     }

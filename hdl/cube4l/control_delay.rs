@@ -10,6 +10,7 @@
 
 use super::bilinear::LATENCY;
 use super::config::GATHER_DELAY;
+use crate::common::lane_copy::LaneCopy;
 use rust_hdl::prelude::*;
 
 /// Registers from the shader input to the gather, and to the result.
@@ -66,9 +67,10 @@ pub struct ControlDelay {
     pub px_x: Signal<Out, Bits<16>>,
     pub px_y: Signal<Out, Bits<16>>,
     pub px_face: Signal<Out, Bits<3>>,
-    /// `n_x - 1` and `n_y - 1`, registered from `Dims` (constant in a sweep).
-    nx_last: DFF<Bits<16>>,
-    ny_last: DFF<Bits<16>>,
+    /// `n_x - 1` and `n_y - 1`, registered from `Dims` (constant in a
+    /// sweep), the lane's own copies.
+    nx_last: LaneCopy<Bits<16>>,
+    ny_last: LaneCopy<Bits<16>>,
     x_out_q: DFF<Bit>,
     y_out_q: DFF<Bit>,
     // Control to the gather.

@@ -85,9 +85,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] lanes$0$a_n_s;
     reg  [15:0] lanes$0$a_n_beam;
     reg  [15:0] lanes$0$a_n_b;
+    reg  [15:0] lanes$0$c_n_s;
+    reg  [15:0] lanes$0$c_n_beam;
+    reg  [15:0] lanes$0$c_n_b;
     reg  [15:0] lanes$0$n_s;
     reg  [15:0] lanes$0$n_beam;
-    reg  [15:0] lanes$0$n_b;
     reg  lanes$0$load_enable;
     reg  [7:0] lanes$0$load_module;
     reg  [15:0] lanes$0$load_address;
@@ -128,9 +130,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] lanes$1$a_n_s;
     reg  [15:0] lanes$1$a_n_beam;
     reg  [15:0] lanes$1$a_n_b;
+    reg  [15:0] lanes$1$c_n_s;
+    reg  [15:0] lanes$1$c_n_beam;
+    reg  [15:0] lanes$1$c_n_b;
     reg  [15:0] lanes$1$n_s;
     reg  [15:0] lanes$1$n_beam;
-    reg  [15:0] lanes$1$n_b;
     reg  lanes$1$load_enable;
     reg  [7:0] lanes$1$load_module;
     reg  [15:0] lanes$1$load_address;
@@ -253,6 +257,21 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] ns_left$d;
     wire  [15:0] ns_left$q;
     reg  ns_left$clock;
+    reg  nb_end$d;
+    wire  nb_end$q;
+    reg  nb_end$clock;
+    reg  nbeam_end$d;
+    wire  nbeam_end$q;
+    reg  nbeam_end$clock;
+    reg  ns_end$d;
+    wire  ns_end$q;
+    reg  ns_end$clock;
+    reg  ny_last_zero$d;
+    wire  ny_last_zero$q;
+    reg  ny_last_zero$clock;
+    reg  b_last_zero$d;
+    wire  b_last_zero$q;
+    reg  b_last_zero$clock;
     
     // Local signals
     reg  e_run;
@@ -282,9 +301,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .a_n_s(lanes$0$a_n_s),
         .a_n_beam(lanes$0$a_n_beam),
         .a_n_b(lanes$0$a_n_b),
+        .c_n_s(lanes$0$c_n_s),
+        .c_n_beam(lanes$0$c_n_beam),
+        .c_n_b(lanes$0$c_n_b),
         .n_s(lanes$0$n_s),
         .n_beam(lanes$0$n_beam),
-        .n_b(lanes$0$n_b),
         .load_enable(lanes$0$load_enable),
         .load_module(lanes$0$load_module),
         .load_address(lanes$0$load_address),
@@ -327,9 +348,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .a_n_s(lanes$1$a_n_s),
         .a_n_beam(lanes$1$a_n_beam),
         .a_n_b(lanes$1$a_n_b),
+        .c_n_s(lanes$1$c_n_s),
+        .c_n_beam(lanes$1$c_n_beam),
+        .c_n_b(lanes$1$c_n_b),
         .n_s(lanes$1$n_s),
         .n_beam(lanes$1$n_beam),
-        .n_b(lanes$1$n_b),
         .load_enable(lanes$1$load_enable),
         .load_module(lanes$1$load_module),
         .load_address(lanes$1$load_address),
@@ -513,6 +536,31 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .q(ns_left$q),
         .clock(ns_left$clock)
     );
+    top$cfb$nb_end nb_end(
+        .d(nb_end$d),
+        .q(nb_end$q),
+        .clock(nb_end$clock)
+    );
+    top$cfb$nbeam_end nbeam_end(
+        .d(nbeam_end$d),
+        .q(nbeam_end$q),
+        .clock(nbeam_end$clock)
+    );
+    top$cfb$ns_end ns_end(
+        .d(ns_end$d),
+        .q(ns_end$q),
+        .clock(ns_end$clock)
+    );
+    top$cfb$ny_last_zero ny_last_zero(
+        .d(ny_last_zero$d),
+        .q(ny_last_zero$q),
+        .clock(ny_last_zero$clock)
+    );
+    top$cfb$b_last_zero b_last_zero(
+        .d(b_last_zero$d),
+        .q(b_last_zero$q),
+        .clock(b_last_zero$clock)
+    );
     
     // Update code
     reg  busy_pass;
@@ -546,6 +594,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_left$clock = clock;
         nbeam_left$clock = clock;
         ns_left$clock = clock;
+        nb_end$clock = clock;
+        nbeam_end$clock = clock;
+        ns_end$clock = clock;
+        ny_last_zero$clock = clock;
+        b_last_zero$clock = clock;
         running$d = running$q;
         ns_c$d = ns_c$q;
         nbeam_c$d = nbeam_c$q;
@@ -575,6 +628,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_left$d = nb_left$q;
         nbeam_left$d = nbeam_left$q;
         ns_left$d = ns_left$q;
+        nb_end$d = nb_end$q;
+        nbeam_end$d = nbeam_end$q;
+        ns_end$d = ns_end$q;
+        ny_last_zero$d = ny_last_zero$q;
+        b_last_zero$d = b_last_zero$q;
         lead$clock = clock;
         lead$reset = reset;
         lead$running = running$q;
@@ -613,6 +671,8 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         b_m1 = beats[('h20)+:(16)] - 'h1;
         ny_last$d = ny_m1;
         b_last$d = b_m1;
+        ny_last_zero$d = ny_m1 == 'h0;
+        b_last_zero$d = b_m1 == 'h0;
         lanes$0$clock = clock;
         lanes$0$dims = dims;
         lanes$0$slices = slices;
@@ -629,9 +689,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$0$a_n_s = e_ns;
         lanes$0$a_n_beam = e_nbeam;
         lanes$0$a_n_b = e_nb;
+        lanes$0$c_n_s = ns_d3$q;
+        lanes$0$c_n_beam = nbeam_d3$q;
+        lanes$0$c_n_b = nb_d3$q;
         lanes$0$n_s = ns_d4$q;
         lanes$0$n_beam = nbeam_d4$q;
-        lanes$0$n_b = nb_d4$q;
         lanes$0$load_enable = load_enable;
         lanes$0$load_module = load_module;
         lanes$0$load_address = load_address;
@@ -672,9 +734,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$1$a_n_s = e_ns;
         lanes$1$a_n_beam = e_nbeam;
         lanes$1$a_n_b = e_nb;
+        lanes$1$c_n_s = ns_d3$q;
+        lanes$1$c_n_beam = nbeam_d3$q;
+        lanes$1$c_n_b = nb_d3$q;
         lanes$1$n_s = ns_d4$q;
         lanes$1$n_beam = nbeam_d4$q;
-        lanes$1$n_b = nb_d4$q;
         lanes$1$load_enable = load_enable;
         lanes$1$load_module = load_module;
         lanes$1$load_address = load_address;
@@ -707,25 +771,33 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
             nb_left$d = b_m1;
             nbeam_left$d = ny_m1;
             ns_left$d = z1 - z0;
+            nb_end$d = b_m1 == 'h0;
+            nbeam_end$d = ny_m1 == 'h0;
+            ns_end$d = z1 == z0;
         end
         if (running$q) begin
-            if (nb_left$q != 'h0) begin
+            if (~nb_end$q) begin
                 nb_c$d = nb_c$q + 'h1;
                 nb_left$d = nb_left$q - 'h1;
+                nb_end$d = nb_left$q == 'h1;
             end
             else begin
                 nb_c$d = 'h0;
                 nb_left$d = b_last$q;
-                if (nbeam_left$q != 'h0) begin
+                nb_end$d = b_last_zero$q;
+                if (~nbeam_end$q) begin
                     nbeam_c$d = nbeam_c$q + 'h1;
                     nbeam_left$d = nbeam_left$q - 'h1;
+                    nbeam_end$d = nbeam_left$q == 'h1;
                 end
                 else begin
                     nbeam_c$d = 'h0;
                     nbeam_left$d = ny_last$q;
-                    if (ns_left$q != 'h0) begin
+                    nbeam_end$d = ny_last_zero$q;
+                    if (~ns_end$q) begin
                         ns_c$d = ns_c$q + 'h1;
                         ns_left$d = ns_left$q - 'h1;
+                        ns_end$d = ns_left$q == 'h1;
                     end
                     else begin
                         running$d = 1'b0;
@@ -770,7 +842,24 @@ module top$cfb$b_last(d,q,clock);
     end
           
 endmodule // top$cfb$b_last
-module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$b_last_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$b_last_zero
+module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,c_n_s,c_n_beam,c_n_b,n_s,n_beam,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -789,9 +878,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
+    input wire  [15:0] c_n_s;
+    input wire  [15:0] c_n_beam;
+    input wire  [15:0] c_n_b;
     input wire  [15:0] n_s;
     input wire  [15:0] n_beam;
-    input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
     input wire  [15:0] load_address;
@@ -832,6 +923,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx$d;
+    wire  [15:0] nx$q;
+    reg  nx$clock;
     reg  [15:0] nx_last$d;
     wire  [15:0] nx_last$q;
     reg  nx_last$clock;
@@ -844,6 +938,15 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] border$d;
     wire  [15:0] border$q;
     reg  border$clock;
+    reg  [15:0] b_u$d;
+    wire  [15:0] b_u$q;
+    reg  b_u$clock;
+    reg  [15:0] slab_lo$d;
+    wire  [15:0] slab_lo$q;
+    reg  slab_lo$clock;
+    reg  [15:0] slab_hi$d;
+    wire  [15:0] slab_hi$q;
+    reg  slab_hi$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -892,6 +995,12 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  halo_q$d;
     wire  halo_q$q;
     reg  halo_q$clock;
+    reg  [15:0] xc_r$d;
+    wire  [15:0] xc_r$q;
+    reg  xc_r$clock;
+    reg  pad_r$d;
+    wire  pad_r$q;
+    reg  pad_r$clock;
     reg  [15:0] a_u$d;
     wire  [15:0] a_u$q;
     reg  a_u$clock;
@@ -922,6 +1031,36 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr$d;
     wire  [31:0] addr$q;
     reg  addr$clock;
+    reg  x_last_r$d;
+    wire  x_last_r$q;
+    reg  x_last_r$clock;
+    reg  x_first_r$d;
+    wire  x_first_r$q;
+    reg  x_first_r$clock;
+    reg  y_last_r$d;
+    wire  y_last_r$q;
+    reg  y_last_r$clock;
+    reg  y_first_r$d;
+    wire  y_first_r$q;
+    reg  y_first_r$clock;
+    reg  s_last_r$d;
+    wire  s_last_r$q;
+    reg  s_last_r$clock;
+    reg  [15:0] bx_at_r$d;
+    wire  [15:0] bx_at_r$q;
+    reg  bx_at_r$clock;
+    reg  [15:0] bx_far_r$d;
+    wire  [15:0] bx_far_r$q;
+    reg  bx_far_r$clock;
+    reg  [15:0] b_near_r$d;
+    wire  [15:0] b_near_r$q;
+    reg  b_near_r$clock;
+    reg  [15:0] by_at_r$d;
+    wire  [15:0] by_at_r$q;
+    reg  by_at_r$clock;
+    reg  [15:0] by_far_r$d;
+    wire  [15:0] by_far_r$q;
+    reg  by_far_r$clock;
     reg  [15:0] x_q$d;
     wire  [15:0] x_q$q;
     reg  x_q$clock;
@@ -960,15 +1099,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  by_q$clock;
     
     // Local signals
-    reg  [15:0] nx;
     reg  [15:0] z0;
     reg  [15:0] z1;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [15:0] b_u;
-    reg  [15:0] slab_lo;
-    reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
     reg  dxn;
@@ -980,11 +1115,12 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  dx_neg_nz;
     reg  dy_pos;
     reg  dy_neg_nz;
+    reg  [15:0] c_xc;
     reg  [15:0] xc;
     reg  [15:0] a_xc;
     reg  is_pad;
     reg  [2:0] face_c;
-    reg  [15:0] depth;
+    reg  [15:0] c_depth;
     reg  [15:0] bx;
     reg  [15:0] by;
     
@@ -997,6 +1133,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$0$nx nx(
+        .d(nx$d),
+        .q(nx$q),
+        .clock(nx$clock)
     );
     top$cfb$lanes$0$nx_last nx_last(
         .d(nx_last$d),
@@ -1017,6 +1158,21 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(border$d),
         .q(border$q),
         .clock(border$clock)
+    );
+    top$cfb$lanes$0$b_u b_u(
+        .d(b_u$d),
+        .q(b_u$q),
+        .clock(b_u$clock)
+    );
+    top$cfb$lanes$0$slab_lo slab_lo(
+        .d(slab_lo$d),
+        .q(slab_lo$q),
+        .clock(slab_lo$clock)
+    );
+    top$cfb$lanes$0$slab_hi slab_hi(
+        .d(slab_hi$d),
+        .q(slab_hi$q),
+        .clock(slab_hi$clock)
     );
     top$cfb$lanes$0$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -1092,6 +1248,16 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(halo_q$q),
         .clock(halo_q$clock)
     );
+    top$cfb$lanes$0$xc_r xc_r(
+        .d(xc_r$d),
+        .q(xc_r$q),
+        .clock(xc_r$clock)
+    );
+    top$cfb$lanes$0$pad_r pad_r(
+        .d(pad_r$d),
+        .q(pad_r$q),
+        .clock(pad_r$clock)
+    );
     top$cfb$lanes$0$a_u a_u(
         .d(a_u$d),
         .q(a_u$q),
@@ -1141,6 +1307,56 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(addr$d),
         .q(addr$q),
         .clock(addr$clock)
+    );
+    top$cfb$lanes$0$x_last_r x_last_r(
+        .d(x_last_r$d),
+        .q(x_last_r$q),
+        .clock(x_last_r$clock)
+    );
+    top$cfb$lanes$0$x_first_r x_first_r(
+        .d(x_first_r$d),
+        .q(x_first_r$q),
+        .clock(x_first_r$clock)
+    );
+    top$cfb$lanes$0$y_last_r y_last_r(
+        .d(y_last_r$d),
+        .q(y_last_r$q),
+        .clock(y_last_r$clock)
+    );
+    top$cfb$lanes$0$y_first_r y_first_r(
+        .d(y_first_r$d),
+        .q(y_first_r$q),
+        .clock(y_first_r$clock)
+    );
+    top$cfb$lanes$0$s_last_r s_last_r(
+        .d(s_last_r$d),
+        .q(s_last_r$q),
+        .clock(s_last_r$clock)
+    );
+    top$cfb$lanes$0$bx_at_r bx_at_r(
+        .d(bx_at_r$d),
+        .q(bx_at_r$q),
+        .clock(bx_at_r$clock)
+    );
+    top$cfb$lanes$0$bx_far_r bx_far_r(
+        .d(bx_far_r$d),
+        .q(bx_far_r$q),
+        .clock(bx_far_r$clock)
+    );
+    top$cfb$lanes$0$b_near_r b_near_r(
+        .d(b_near_r$d),
+        .q(b_near_r$q),
+        .clock(b_near_r$clock)
+    );
+    top$cfb$lanes$0$by_at_r by_at_r(
+        .d(by_at_r$d),
+        .q(by_at_r$q),
+        .clock(by_at_r$clock)
+    );
+    top$cfb$lanes$0$by_far_r by_far_r(
+        .d(by_far_r$d),
+        .q(by_far_r$q),
+        .clock(by_far_r$clock)
     );
     top$cfb$lanes$0$x_q x_q(
         .d(x_q$d),
@@ -1234,6 +1450,22 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        xc_r$clock = clock;
+        pad_r$clock = clock;
+        x_last_r$clock = clock;
+        x_first_r$clock = clock;
+        y_last_r$clock = clock;
+        y_first_r$clock = clock;
+        s_last_r$clock = clock;
+        bx_at_r$clock = clock;
+        bx_far_r$clock = clock;
+        b_near_r$clock = clock;
+        by_at_r$clock = clock;
+        by_far_r$clock = clock;
+        nx$clock = clock;
+        b_u$clock = clock;
+        slab_lo$clock = clock;
+        slab_hi$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -1272,6 +1504,22 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        xc_r$d = xc_r$q;
+        pad_r$d = pad_r$q;
+        x_last_r$d = x_last_r$q;
+        x_first_r$d = x_first_r$q;
+        y_last_r$d = y_last_r$q;
+        y_first_r$d = y_first_r$q;
+        s_last_r$d = s_last_r$q;
+        bx_at_r$d = bx_at_r$q;
+        bx_far_r$d = bx_far_r$q;
+        b_near_r$d = b_near_r$q;
+        by_at_r$d = by_at_r$q;
+        by_far_r$d = by_far_r$q;
+        nx$d = nx$q;
+        b_u$d = b_u$q;
+        slab_lo$d = slab_lo$q;
+        slab_hi$d = slab_hi$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -1282,7 +1530,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
-        nx = dims[('h0)+:(16)];
+        nx$d = dims[('h0)+:(16)];
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         nz_last$d = dims[('h20)+:(16)] - 'h1;
@@ -1292,9 +1540,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
-        b_u = address_reg[('h0)+:(16)];
-        slab_lo = address_reg[('h10)+:(16)];
-        slab_hi = address_reg[('h20)+:(16)];
+        b_u$d = address_reg[('h0)+:(16)];
+        slab_lo$d = address_reg[('h10)+:(16)];
+        slab_hi$d = address_reg[('h20)+:(16)];
         dx_abs = dx;
         if (dx['h3f]) begin
             dx_abs = 'h0 - dx;
@@ -1315,7 +1563,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         memory$write_address = load_address;
         memory$write_data = load_data;
         a_xc = (a_n_b << p_shift) | ((lane - a_n_beam - a_n_s) & p_mask);
-        a_pad$d = a_xc >= nx;
+        a_pad$d = a_xc >= nx$q;
         a_u$d = a_xc;
         if (u_from == 'h1) begin
             a_u$d = a_n_beam;
@@ -1338,9 +1586,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u;
-        m_w_lo$d = a_w$q * slab_lo;
-        m_w_hi$d = a_w$q * slab_hi;
+        m_v$d = a_v$q * b_u$q;
+        m_w_lo$d = a_w$q * slab_lo$q;
+        m_w_hi$d = a_w$q * slab_hi$q;
         m_pad$d = a_pad$q;
         addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
         if (m_pad$q) begin
@@ -1348,8 +1596,22 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         memory$read_address = 16'(addr$q);
         ext_addr = addr$q;
-        xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
-        is_pad = xc >= nx;
+        c_xc = (c_n_b << p_shift) | ((lane - c_n_beam - c_n_s) & p_mask);
+        xc_r$d = c_xc;
+        pad_r$d = c_xc >= nx$q;
+        xc = xc_r$q;
+        is_pad = pad_r$q;
+        c_depth = z1 - c_n_s;
+        x_last_r$d = c_xc == nx_last$q;
+        x_first_r$d = c_xc == 'h0;
+        y_last_r$d = c_n_beam == ny_last$q;
+        y_first_r$d = c_n_beam == 'h0;
+        s_last_r$d = c_n_s == z1;
+        bx_at_r$d = border$q + c_xc;
+        bx_far_r$d = border$q + c_xc + c_depth;
+        b_near_r$d = border$q - c_depth;
+        by_at_r$d = border$q + c_n_beam;
+        by_far_r$d = border$q + c_n_beam + c_depth;
         div$clock = clock;
         div$n_s = d_n_s;
         div$n_beam = d_n_beam;
@@ -1384,29 +1646,28 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dyn_ = 1'b0;
         end
         face_c = 'h0;
-        depth = z1 - n_s;
-        bx = border$q + xc;
-        by = border$q + n_beam;
-        if ((xc == nx_last$q) & dx_pos) begin
+        bx = bx_at_r$q;
+        by = by_at_r$q;
+        if (x_last_r$q & dx_pos) begin
             face_c = 'h2;
-            bx = border$q + xc + depth;
+            bx = bx_far_r$q;
         end
-        else if ((xc == 'h0) & dx_neg_nz) begin
+        else if (x_first_r$q & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border$q - depth;
+            bx = b_near_r$q;
         end
-        else if ((n_beam == ny_last$q) & dy_pos) begin
+        else if (y_last_r$q & dy_pos) begin
             face_c = 'h4;
-            by = border$q + n_beam + depth;
+            by = by_far_r$q;
         end
-        else if ((n_beam == 'h0) & dy_neg_nz) begin
+        else if (y_first_r$q & dy_neg_nz) begin
             face_c = 'h5;
-            by = border$q - depth;
+            by = b_near_r$q;
         end
-        if (n_s == z1) begin
+        if (s_last_r$q) begin
             face_c = 'h1;
-            bx = border$q + xc;
-            by = border$q + n_beam;
+            bx = bx_at_r$q;
+            by = by_at_r$q;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -1422,7 +1683,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
+        edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -1580,7 +1841,7 @@ module top$cfb$lanes$0$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$addr_q2
-module top$cfb$lanes$0$border(d,q,clock);
+module top$cfb$lanes$0$b_near_r(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1596,7 +1857,75 @@ module top$cfb$lanes$0$border(d,q,clock);
        q <= d;
     end
           
+endmodule // top$cfb$lanes$0$b_near_r
+module top$cfb$lanes$0$b_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$b_u
+module top$cfb$lanes$0$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$cfb$lanes$0$border
+module top$cfb$lanes$0$bx_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$bx_at_r
+module top$cfb$lanes$0$bx_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$bx_far_r
 module top$cfb$lanes$0$bx_q(d,q,clock);
     
     // Module arguments
@@ -1614,6 +1943,40 @@ module top$cfb$lanes$0$bx_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$bx_q
+module top$cfb$lanes$0$by_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$by_at_r
+module top$cfb$lanes$0$by_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$by_far_r
 module top$cfb$lanes$0$by_q(d,q,clock);
     
     // Module arguments
@@ -1922,6 +2285,23 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$cfb$lanes$0$memory
+module top$cfb$lanes$0$nx(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$nx
 module top$cfb$lanes$0$nx_last(d,q,clock);
     
     // Module arguments
@@ -1934,10 +2314,10 @@ module top$cfb$lanes$0$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$nx_last
 module top$cfb$lanes$0$ny_last(d,q,clock);
     
@@ -1951,10 +2331,10 @@ module top$cfb$lanes$0$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$ny_last
 module top$cfb$lanes$0$nz_last(d,q,clock);
     
@@ -1968,10 +2348,10 @@ module top$cfb$lanes$0$nz_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$nz_last
 module top$cfb$lanes$0$pad_q(d,q,clock);
     
@@ -1990,7 +2370,7 @@ module top$cfb$lanes$0$pad_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$pad_q
-module top$cfb$lanes$0$par_dx_pos(d,q,clock);
+module top$cfb$lanes$0$pad_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -2006,6 +2386,23 @@ module top$cfb$lanes$0$par_dx_pos(d,q,clock);
        q <= d;
     end
           
+endmodule // top$cfb$lanes$0$pad_r
+module top$cfb$lanes$0$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$cfb$lanes$0$par_dx_pos
 module top$cfb$lanes$0$par_dxm(d,q,clock);
     
@@ -2019,10 +2416,10 @@ module top$cfb$lanes$0$par_dxm(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$par_dxm
 module top$cfb$lanes$0$par_dxn(d,q,clock);
     
@@ -2036,10 +2433,10 @@ module top$cfb$lanes$0$par_dxn(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$par_dxn
 module top$cfb$lanes$0$par_dy_pos(d,q,clock);
     
@@ -2053,10 +2450,10 @@ module top$cfb$lanes$0$par_dy_pos(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$par_dy_pos
 module top$cfb$lanes$0$par_dym(d,q,clock);
     
@@ -2070,12 +2467,29 @@ module top$cfb$lanes$0$par_dym(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$par_dym
 module top$cfb$lanes$0$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$par_dyn
+module top$cfb$lanes$0$s_last_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -2091,7 +2505,41 @@ module top$cfb$lanes$0$par_dyn(d,q,clock);
        q <= d;
     end
           
-endmodule // top$cfb$lanes$0$par_dyn
+endmodule // top$cfb$lanes$0$s_last_r
+module top$cfb$lanes$0$slab_hi(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$slab_hi
+module top$cfb$lanes$0$slab_lo(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$slab_lo
 module top$cfb$lanes$0$sr_q(d,q,clock);
     
     // Module arguments
@@ -2109,6 +2557,40 @@ module top$cfb$lanes$0$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$sr_q
+module top$cfb$lanes$0$x_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$x_first_r
+module top$cfb$lanes$0$x_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$x_last_r
 module top$cfb$lanes$0$x_q(d,q,clock);
     
     // Module arguments
@@ -2126,6 +2608,57 @@ module top$cfb$lanes$0$x_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$x_q
+module top$cfb$lanes$0$xc_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$xc_r
+module top$cfb$lanes$0$y_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$y_first_r
+module top$cfb$lanes$0$y_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$y_last_r
 module top$cfb$lanes$0$y_q(d,q,clock);
     
     // Module arguments
@@ -2160,7 +2693,7 @@ module top$cfb$lanes$0$z_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$z_q
-module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,c_n_s,c_n_beam,c_n_b,n_s,n_beam,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -2179,9 +2712,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
+    input wire  [15:0] c_n_s;
+    input wire  [15:0] c_n_beam;
+    input wire  [15:0] c_n_b;
     input wire  [15:0] n_s;
     input wire  [15:0] n_beam;
-    input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
     input wire  [15:0] load_address;
@@ -2222,6 +2757,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx$d;
+    wire  [15:0] nx$q;
+    reg  nx$clock;
     reg  [15:0] nx_last$d;
     wire  [15:0] nx_last$q;
     reg  nx_last$clock;
@@ -2234,6 +2772,15 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] border$d;
     wire  [15:0] border$q;
     reg  border$clock;
+    reg  [15:0] b_u$d;
+    wire  [15:0] b_u$q;
+    reg  b_u$clock;
+    reg  [15:0] slab_lo$d;
+    wire  [15:0] slab_lo$q;
+    reg  slab_lo$clock;
+    reg  [15:0] slab_hi$d;
+    wire  [15:0] slab_hi$q;
+    reg  slab_hi$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -2282,6 +2829,12 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  halo_q$d;
     wire  halo_q$q;
     reg  halo_q$clock;
+    reg  [15:0] xc_r$d;
+    wire  [15:0] xc_r$q;
+    reg  xc_r$clock;
+    reg  pad_r$d;
+    wire  pad_r$q;
+    reg  pad_r$clock;
     reg  [15:0] a_u$d;
     wire  [15:0] a_u$q;
     reg  a_u$clock;
@@ -2312,6 +2865,36 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr$d;
     wire  [31:0] addr$q;
     reg  addr$clock;
+    reg  x_last_r$d;
+    wire  x_last_r$q;
+    reg  x_last_r$clock;
+    reg  x_first_r$d;
+    wire  x_first_r$q;
+    reg  x_first_r$clock;
+    reg  y_last_r$d;
+    wire  y_last_r$q;
+    reg  y_last_r$clock;
+    reg  y_first_r$d;
+    wire  y_first_r$q;
+    reg  y_first_r$clock;
+    reg  s_last_r$d;
+    wire  s_last_r$q;
+    reg  s_last_r$clock;
+    reg  [15:0] bx_at_r$d;
+    wire  [15:0] bx_at_r$q;
+    reg  bx_at_r$clock;
+    reg  [15:0] bx_far_r$d;
+    wire  [15:0] bx_far_r$q;
+    reg  bx_far_r$clock;
+    reg  [15:0] b_near_r$d;
+    wire  [15:0] b_near_r$q;
+    reg  b_near_r$clock;
+    reg  [15:0] by_at_r$d;
+    wire  [15:0] by_at_r$q;
+    reg  by_at_r$clock;
+    reg  [15:0] by_far_r$d;
+    wire  [15:0] by_far_r$q;
+    reg  by_far_r$clock;
     reg  [15:0] x_q$d;
     wire  [15:0] x_q$q;
     reg  x_q$clock;
@@ -2350,15 +2933,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  by_q$clock;
     
     // Local signals
-    reg  [15:0] nx;
     reg  [15:0] z0;
     reg  [15:0] z1;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [15:0] b_u;
-    reg  [15:0] slab_lo;
-    reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
     reg  dxn;
@@ -2370,11 +2949,12 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  dx_neg_nz;
     reg  dy_pos;
     reg  dy_neg_nz;
+    reg  [15:0] c_xc;
     reg  [15:0] xc;
     reg  [15:0] a_xc;
     reg  is_pad;
     reg  [2:0] face_c;
-    reg  [15:0] depth;
+    reg  [15:0] c_depth;
     reg  [15:0] bx;
     reg  [15:0] by;
     
@@ -2387,6 +2967,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$1$nx nx(
+        .d(nx$d),
+        .q(nx$q),
+        .clock(nx$clock)
     );
     top$cfb$lanes$1$nx_last nx_last(
         .d(nx_last$d),
@@ -2407,6 +2992,21 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(border$d),
         .q(border$q),
         .clock(border$clock)
+    );
+    top$cfb$lanes$1$b_u b_u(
+        .d(b_u$d),
+        .q(b_u$q),
+        .clock(b_u$clock)
+    );
+    top$cfb$lanes$1$slab_lo slab_lo(
+        .d(slab_lo$d),
+        .q(slab_lo$q),
+        .clock(slab_lo$clock)
+    );
+    top$cfb$lanes$1$slab_hi slab_hi(
+        .d(slab_hi$d),
+        .q(slab_hi$q),
+        .clock(slab_hi$clock)
     );
     top$cfb$lanes$1$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -2482,6 +3082,16 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(halo_q$q),
         .clock(halo_q$clock)
     );
+    top$cfb$lanes$1$xc_r xc_r(
+        .d(xc_r$d),
+        .q(xc_r$q),
+        .clock(xc_r$clock)
+    );
+    top$cfb$lanes$1$pad_r pad_r(
+        .d(pad_r$d),
+        .q(pad_r$q),
+        .clock(pad_r$clock)
+    );
     top$cfb$lanes$1$a_u a_u(
         .d(a_u$d),
         .q(a_u$q),
@@ -2531,6 +3141,56 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(addr$d),
         .q(addr$q),
         .clock(addr$clock)
+    );
+    top$cfb$lanes$1$x_last_r x_last_r(
+        .d(x_last_r$d),
+        .q(x_last_r$q),
+        .clock(x_last_r$clock)
+    );
+    top$cfb$lanes$1$x_first_r x_first_r(
+        .d(x_first_r$d),
+        .q(x_first_r$q),
+        .clock(x_first_r$clock)
+    );
+    top$cfb$lanes$1$y_last_r y_last_r(
+        .d(y_last_r$d),
+        .q(y_last_r$q),
+        .clock(y_last_r$clock)
+    );
+    top$cfb$lanes$1$y_first_r y_first_r(
+        .d(y_first_r$d),
+        .q(y_first_r$q),
+        .clock(y_first_r$clock)
+    );
+    top$cfb$lanes$1$s_last_r s_last_r(
+        .d(s_last_r$d),
+        .q(s_last_r$q),
+        .clock(s_last_r$clock)
+    );
+    top$cfb$lanes$1$bx_at_r bx_at_r(
+        .d(bx_at_r$d),
+        .q(bx_at_r$q),
+        .clock(bx_at_r$clock)
+    );
+    top$cfb$lanes$1$bx_far_r bx_far_r(
+        .d(bx_far_r$d),
+        .q(bx_far_r$q),
+        .clock(bx_far_r$clock)
+    );
+    top$cfb$lanes$1$b_near_r b_near_r(
+        .d(b_near_r$d),
+        .q(b_near_r$q),
+        .clock(b_near_r$clock)
+    );
+    top$cfb$lanes$1$by_at_r by_at_r(
+        .d(by_at_r$d),
+        .q(by_at_r$q),
+        .clock(by_at_r$clock)
+    );
+    top$cfb$lanes$1$by_far_r by_far_r(
+        .d(by_far_r$d),
+        .q(by_far_r$q),
+        .clock(by_far_r$clock)
     );
     top$cfb$lanes$1$x_q x_q(
         .d(x_q$d),
@@ -2624,6 +3284,22 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        xc_r$clock = clock;
+        pad_r$clock = clock;
+        x_last_r$clock = clock;
+        x_first_r$clock = clock;
+        y_last_r$clock = clock;
+        y_first_r$clock = clock;
+        s_last_r$clock = clock;
+        bx_at_r$clock = clock;
+        bx_far_r$clock = clock;
+        b_near_r$clock = clock;
+        by_at_r$clock = clock;
+        by_far_r$clock = clock;
+        nx$clock = clock;
+        b_u$clock = clock;
+        slab_lo$clock = clock;
+        slab_hi$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -2662,6 +3338,22 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        xc_r$d = xc_r$q;
+        pad_r$d = pad_r$q;
+        x_last_r$d = x_last_r$q;
+        x_first_r$d = x_first_r$q;
+        y_last_r$d = y_last_r$q;
+        y_first_r$d = y_first_r$q;
+        s_last_r$d = s_last_r$q;
+        bx_at_r$d = bx_at_r$q;
+        bx_far_r$d = bx_far_r$q;
+        b_near_r$d = b_near_r$q;
+        by_at_r$d = by_at_r$q;
+        by_far_r$d = by_far_r$q;
+        nx$d = nx$q;
+        b_u$d = b_u$q;
+        slab_lo$d = slab_lo$q;
+        slab_hi$d = slab_hi$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -2672,7 +3364,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
-        nx = dims[('h0)+:(16)];
+        nx$d = dims[('h0)+:(16)];
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         nz_last$d = dims[('h20)+:(16)] - 'h1;
@@ -2682,9 +3374,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
-        b_u = address_reg[('h0)+:(16)];
-        slab_lo = address_reg[('h10)+:(16)];
-        slab_hi = address_reg[('h20)+:(16)];
+        b_u$d = address_reg[('h0)+:(16)];
+        slab_lo$d = address_reg[('h10)+:(16)];
+        slab_hi$d = address_reg[('h20)+:(16)];
         dx_abs = dx;
         if (dx['h3f]) begin
             dx_abs = 'h0 - dx;
@@ -2705,7 +3397,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         memory$write_address = load_address;
         memory$write_data = load_data;
         a_xc = (a_n_b << p_shift) | ((lane - a_n_beam - a_n_s) & p_mask);
-        a_pad$d = a_xc >= nx;
+        a_pad$d = a_xc >= nx$q;
         a_u$d = a_xc;
         if (u_from == 'h1) begin
             a_u$d = a_n_beam;
@@ -2728,9 +3420,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u;
-        m_w_lo$d = a_w$q * slab_lo;
-        m_w_hi$d = a_w$q * slab_hi;
+        m_v$d = a_v$q * b_u$q;
+        m_w_lo$d = a_w$q * slab_lo$q;
+        m_w_hi$d = a_w$q * slab_hi$q;
         m_pad$d = a_pad$q;
         addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
         if (m_pad$q) begin
@@ -2738,8 +3430,22 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         memory$read_address = 16'(addr$q);
         ext_addr = addr$q;
-        xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
-        is_pad = xc >= nx;
+        c_xc = (c_n_b << p_shift) | ((lane - c_n_beam - c_n_s) & p_mask);
+        xc_r$d = c_xc;
+        pad_r$d = c_xc >= nx$q;
+        xc = xc_r$q;
+        is_pad = pad_r$q;
+        c_depth = z1 - c_n_s;
+        x_last_r$d = c_xc == nx_last$q;
+        x_first_r$d = c_xc == 'h0;
+        y_last_r$d = c_n_beam == ny_last$q;
+        y_first_r$d = c_n_beam == 'h0;
+        s_last_r$d = c_n_s == z1;
+        bx_at_r$d = border$q + c_xc;
+        bx_far_r$d = border$q + c_xc + c_depth;
+        b_near_r$d = border$q - c_depth;
+        by_at_r$d = border$q + c_n_beam;
+        by_far_r$d = border$q + c_n_beam + c_depth;
         div$clock = clock;
         div$n_s = d_n_s;
         div$n_beam = d_n_beam;
@@ -2774,29 +3480,28 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dyn_ = 1'b0;
         end
         face_c = 'h0;
-        depth = z1 - n_s;
-        bx = border$q + xc;
-        by = border$q + n_beam;
-        if ((xc == nx_last$q) & dx_pos) begin
+        bx = bx_at_r$q;
+        by = by_at_r$q;
+        if (x_last_r$q & dx_pos) begin
             face_c = 'h2;
-            bx = border$q + xc + depth;
+            bx = bx_far_r$q;
         end
-        else if ((xc == 'h0) & dx_neg_nz) begin
+        else if (x_first_r$q & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border$q - depth;
+            bx = b_near_r$q;
         end
-        else if ((n_beam == ny_last$q) & dy_pos) begin
+        else if (y_last_r$q & dy_pos) begin
             face_c = 'h4;
-            by = border$q + n_beam + depth;
+            by = by_far_r$q;
         end
-        else if ((n_beam == 'h0) & dy_neg_nz) begin
+        else if (y_first_r$q & dy_neg_nz) begin
             face_c = 'h5;
-            by = border$q - depth;
+            by = b_near_r$q;
         end
-        if (n_s == z1) begin
+        if (s_last_r$q) begin
             face_c = 'h1;
-            bx = border$q + xc;
-            by = border$q + n_beam;
+            bx = bx_at_r$q;
+            by = by_at_r$q;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -2812,7 +3517,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
+        edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -2970,7 +3675,7 @@ module top$cfb$lanes$1$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$addr_q2
-module top$cfb$lanes$1$border(d,q,clock);
+module top$cfb$lanes$1$b_near_r(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -2986,7 +3691,75 @@ module top$cfb$lanes$1$border(d,q,clock);
        q <= d;
     end
           
+endmodule // top$cfb$lanes$1$b_near_r
+module top$cfb$lanes$1$b_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$b_u
+module top$cfb$lanes$1$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$cfb$lanes$1$border
+module top$cfb$lanes$1$bx_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$bx_at_r
+module top$cfb$lanes$1$bx_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$bx_far_r
 module top$cfb$lanes$1$bx_q(d,q,clock);
     
     // Module arguments
@@ -3004,6 +3777,40 @@ module top$cfb$lanes$1$bx_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$bx_q
+module top$cfb$lanes$1$by_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$by_at_r
+module top$cfb$lanes$1$by_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$by_far_r
 module top$cfb$lanes$1$by_q(d,q,clock);
     
     // Module arguments
@@ -3312,6 +4119,23 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
        read_data = {8'd0, q_0[7:0]};
     end
 endmodule // top$cfb$lanes$1$memory
+module top$cfb$lanes$1$nx(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$nx
 module top$cfb$lanes$1$nx_last(d,q,clock);
     
     // Module arguments
@@ -3324,10 +4148,10 @@ module top$cfb$lanes$1$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$nx_last
 module top$cfb$lanes$1$ny_last(d,q,clock);
     
@@ -3341,10 +4165,10 @@ module top$cfb$lanes$1$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$ny_last
 module top$cfb$lanes$1$nz_last(d,q,clock);
     
@@ -3358,10 +4182,10 @@ module top$cfb$lanes$1$nz_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$nz_last
 module top$cfb$lanes$1$pad_q(d,q,clock);
     
@@ -3380,7 +4204,7 @@ module top$cfb$lanes$1$pad_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$pad_q
-module top$cfb$lanes$1$par_dx_pos(d,q,clock);
+module top$cfb$lanes$1$pad_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3396,6 +4220,23 @@ module top$cfb$lanes$1$par_dx_pos(d,q,clock);
        q <= d;
     end
           
+endmodule // top$cfb$lanes$1$pad_r
+module top$cfb$lanes$1$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$cfb$lanes$1$par_dx_pos
 module top$cfb$lanes$1$par_dxm(d,q,clock);
     
@@ -3409,10 +4250,10 @@ module top$cfb$lanes$1$par_dxm(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$par_dxm
 module top$cfb$lanes$1$par_dxn(d,q,clock);
     
@@ -3426,10 +4267,10 @@ module top$cfb$lanes$1$par_dxn(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$par_dxn
 module top$cfb$lanes$1$par_dy_pos(d,q,clock);
     
@@ -3443,10 +4284,10 @@ module top$cfb$lanes$1$par_dy_pos(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$par_dy_pos
 module top$cfb$lanes$1$par_dym(d,q,clock);
     
@@ -3460,12 +4301,29 @@ module top$cfb$lanes$1$par_dym(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$par_dym
 module top$cfb$lanes$1$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$par_dyn
+module top$cfb$lanes$1$s_last_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3481,7 +4339,41 @@ module top$cfb$lanes$1$par_dyn(d,q,clock);
        q <= d;
     end
           
-endmodule // top$cfb$lanes$1$par_dyn
+endmodule // top$cfb$lanes$1$s_last_r
+module top$cfb$lanes$1$slab_hi(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$slab_hi
+module top$cfb$lanes$1$slab_lo(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$slab_lo
 module top$cfb$lanes$1$sr_q(d,q,clock);
     
     // Module arguments
@@ -3499,6 +4391,40 @@ module top$cfb$lanes$1$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$sr_q
+module top$cfb$lanes$1$x_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$x_first_r
+module top$cfb$lanes$1$x_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$x_last_r
 module top$cfb$lanes$1$x_q(d,q,clock);
     
     // Module arguments
@@ -3516,6 +4442,57 @@ module top$cfb$lanes$1$x_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$x_q
+module top$cfb$lanes$1$xc_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$xc_r
+module top$cfb$lanes$1$y_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$y_first_r
+module top$cfb$lanes$1$y_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$y_last_r
 module top$cfb$lanes$1$y_q(d,q,clock);
     
     // Module arguments
@@ -3635,6 +4612,23 @@ module top$cfb$nb_d4(d,q,clock);
     end
           
 endmodule // top$cfb$nb_d4
+module top$cfb$nb_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nb_end
 module top$cfb$nb_left(d,q,clock);
     
     // Module arguments
@@ -3754,6 +4748,23 @@ module top$cfb$nbeam_d4(d,q,clock);
     end
           
 endmodule // top$cfb$nbeam_d4
+module top$cfb$nbeam_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nbeam_end
 module top$cfb$nbeam_left(d,q,clock);
     
     // Module arguments
@@ -3873,6 +4884,23 @@ module top$cfb$ns_d4(d,q,clock);
     end
           
 endmodule // top$cfb$ns_d4
+module top$cfb$ns_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ns_end
 module top$cfb$ns_left(d,q,clock);
     
     // Module arguments
@@ -3924,6 +4952,23 @@ module top$cfb$ny_last(d,q,clock);
     end
           
 endmodule // top$cfb$ny_last
+module top$cfb$ny_last_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ny_last_zero
 module top$cfb$run_d1(d,q,clock);
     
     // Module arguments

@@ -962,7 +962,7 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'he;
+    localparam  longest_last = 16'hd;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -989,6 +989,9 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -998,6 +1001,9 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -1037,6 +1043,11 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$0$taps$rows$beam0$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$0$taps$rows$beam0$short short(
         .d(short$d),
         .q(short$q),
@@ -1052,6 +1063,11 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$0$taps$rows$beam0$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -1061,22 +1077,27 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -1092,7 +1113,11 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -1119,10 +1144,10 @@ module top$lanes$0$taps$rows$beam0$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam0$bound
 module top$lanes$0$taps$rows$beam0$head(d,q,clock);
     
@@ -1153,10 +1178,10 @@ module top$lanes$0$taps$rows$beam0$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam0$is_one
 module top$lanes$0$taps$rows$beam0$is_short(d,q,clock);
     
@@ -1170,11 +1195,28 @@ module top$lanes$0$taps$rows$beam0$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam0$is_short
+module top$lanes$0$taps$rows$beam0$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$taps$rows$beam0$is_two
 module top$lanes$0$taps$rows$beam0$one(d,q,clock);
     
     // Module arguments
@@ -1223,13 +1265,15 @@ module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem_0_0[14:0];
+    reg [31:0] mem_0_0[13:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[3:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -1239,7 +1283,7 @@ module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$0$taps$rows$beam0$ram
 module top$lanes$0$taps$rows$beam0$rd(d,q,clock);
@@ -1276,6 +1320,23 @@ module top$lanes$0$taps$rows$beam0$short(d,q,clock);
     end
           
 endmodule // top$lanes$0$taps$rows$beam0$short
+module top$lanes$0$taps$rows$beam0$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$two
 module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1286,7 +1347,7 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'he;
+    localparam  longest_last = 16'hd;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -1313,6 +1374,9 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -1322,6 +1386,9 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -1361,6 +1428,11 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$0$taps$rows$beam1$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$0$taps$rows$beam1$short short(
         .d(short$d),
         .q(short$q),
@@ -1376,6 +1448,11 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$0$taps$rows$beam1$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -1385,22 +1462,27 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -1416,7 +1498,11 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -1443,10 +1529,10 @@ module top$lanes$0$taps$rows$beam1$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam1$bound
 module top$lanes$0$taps$rows$beam1$head(d,q,clock);
     
@@ -1477,10 +1563,10 @@ module top$lanes$0$taps$rows$beam1$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam1$is_one
 module top$lanes$0$taps$rows$beam1$is_short(d,q,clock);
     
@@ -1494,11 +1580,28 @@ module top$lanes$0$taps$rows$beam1$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam1$is_short
+module top$lanes$0$taps$rows$beam1$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$taps$rows$beam1$is_two
 module top$lanes$0$taps$rows$beam1$one(d,q,clock);
     
     // Module arguments
@@ -1547,13 +1650,15 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem_0_0[14:0];
+    reg [31:0] mem_0_0[13:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[3:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -1563,7 +1668,7 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$0$taps$rows$beam1$ram
 module top$lanes$0$taps$rows$beam1$rd(d,q,clock);
@@ -1600,6 +1705,23 @@ module top$lanes$0$taps$rows$beam1$short(d,q,clock);
     end
           
 endmodule // top$lanes$0$taps$rows$beam1$short
+module top$lanes$0$taps$rows$beam1$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$two
 module top$lanes$0$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -1612,10 +1734,10 @@ module top$lanes$0$taps$rows$beam_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam_last
 module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
@@ -1627,7 +1749,7 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h1df;
+    localparam  longest_last = 16'h1de;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -1654,6 +1776,9 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -1663,6 +1788,9 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -1702,6 +1830,11 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$0$taps$rows$ring$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$0$taps$rows$ring$short short(
         .d(short$d),
         .q(short$q),
@@ -1717,6 +1850,11 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$0$taps$rows$ring$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -1726,22 +1864,27 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -1757,7 +1900,11 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -1784,10 +1931,10 @@ module top$lanes$0$taps$rows$ring$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$ring$bound
 module top$lanes$0$taps$rows$ring$head(d,q,clock);
     
@@ -1818,10 +1965,10 @@ module top$lanes$0$taps$rows$ring$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$ring$is_one
 module top$lanes$0$taps$rows$ring$is_short(d,q,clock);
     
@@ -1835,11 +1982,28 @@ module top$lanes$0$taps$rows$ring$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$ring$is_short
+module top$lanes$0$taps$rows$ring$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$taps$rows$ring$is_two
 module top$lanes$0$taps$rows$ring$one(d,q,clock);
     
     // Module arguments
@@ -1887,13 +2051,15 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
-    reg [31:0] mem_0_0[479:0];
+    reg [31:0] mem_0_0[478:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[8:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -1903,7 +2069,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$0$taps$rows$ring$ram
 module top$lanes$0$taps$rows$ring$rd(d,q,clock);
@@ -1940,6 +2106,23 @@ module top$lanes$0$taps$rows$ring$short(d,q,clock);
     end
           
 endmodule // top$lanes$0$taps$rows$ring$short
+module top$lanes$0$taps$rows$ring$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$two
 module top$lanes$0$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -1952,10 +2135,10 @@ module top$lanes$0$taps$rows$ring_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$ring_last
 module top$lanes$0$taps$rows$stage$0(d,q,clock);
     
@@ -4026,7 +4209,7 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'he;
+    localparam  longest_last = 16'hd;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -4053,6 +4236,9 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -4062,6 +4248,9 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -4101,6 +4290,11 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$1$taps$rows$beam0$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$1$taps$rows$beam0$short short(
         .d(short$d),
         .q(short$q),
@@ -4116,6 +4310,11 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$1$taps$rows$beam0$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -4125,22 +4324,27 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -4156,7 +4360,11 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -4183,10 +4391,10 @@ module top$lanes$1$taps$rows$beam0$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam0$bound
 module top$lanes$1$taps$rows$beam0$head(d,q,clock);
     
@@ -4217,10 +4425,10 @@ module top$lanes$1$taps$rows$beam0$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam0$is_one
 module top$lanes$1$taps$rows$beam0$is_short(d,q,clock);
     
@@ -4234,11 +4442,28 @@ module top$lanes$1$taps$rows$beam0$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam0$is_short
+module top$lanes$1$taps$rows$beam0$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$taps$rows$beam0$is_two
 module top$lanes$1$taps$rows$beam0$one(d,q,clock);
     
     // Module arguments
@@ -4287,13 +4512,15 @@ module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem_0_0[14:0];
+    reg [31:0] mem_0_0[13:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[3:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -4303,7 +4530,7 @@ module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$1$taps$rows$beam0$ram
 module top$lanes$1$taps$rows$beam0$rd(d,q,clock);
@@ -4340,6 +4567,23 @@ module top$lanes$1$taps$rows$beam0$short(d,q,clock);
     end
           
 endmodule // top$lanes$1$taps$rows$beam0$short
+module top$lanes$1$taps$rows$beam0$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$two
 module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -4350,7 +4594,7 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'he;
+    localparam  longest_last = 16'hd;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -4377,6 +4621,9 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -4386,6 +4633,9 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -4425,6 +4675,11 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$1$taps$rows$beam1$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$1$taps$rows$beam1$short short(
         .d(short$d),
         .q(short$q),
@@ -4440,6 +4695,11 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$1$taps$rows$beam1$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -4449,22 +4709,27 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -4480,7 +4745,11 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -4507,10 +4776,10 @@ module top$lanes$1$taps$rows$beam1$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam1$bound
 module top$lanes$1$taps$rows$beam1$head(d,q,clock);
     
@@ -4541,10 +4810,10 @@ module top$lanes$1$taps$rows$beam1$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam1$is_one
 module top$lanes$1$taps$rows$beam1$is_short(d,q,clock);
     
@@ -4558,11 +4827,28 @@ module top$lanes$1$taps$rows$beam1$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam1$is_short
+module top$lanes$1$taps$rows$beam1$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$taps$rows$beam1$is_two
 module top$lanes$1$taps$rows$beam1$one(d,q,clock);
     
     // Module arguments
@@ -4611,13 +4897,15 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem_0_0[14:0];
+    reg [31:0] mem_0_0[13:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[3:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -4627,7 +4915,7 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$1$taps$rows$beam1$ram
 module top$lanes$1$taps$rows$beam1$rd(d,q,clock);
@@ -4664,6 +4952,23 @@ module top$lanes$1$taps$rows$beam1$short(d,q,clock);
     end
           
 endmodule // top$lanes$1$taps$rows$beam1$short
+module top$lanes$1$taps$rows$beam1$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$two
 module top$lanes$1$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -4676,10 +4981,10 @@ module top$lanes$1$taps$rows$beam_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam_last
 module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
@@ -4691,7 +4996,7 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h1df;
+    localparam  longest_last = 16'h1de;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -4718,6 +5023,9 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -4727,6 +5035,9 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -4766,6 +5077,11 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$1$taps$rows$ring$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$1$taps$rows$ring$short short(
         .d(short$d),
         .q(short$q),
@@ -4781,6 +5097,11 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$1$taps$rows$ring$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -4790,22 +5111,27 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -4821,7 +5147,11 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -4848,10 +5178,10 @@ module top$lanes$1$taps$rows$ring$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$ring$bound
 module top$lanes$1$taps$rows$ring$head(d,q,clock);
     
@@ -4882,10 +5212,10 @@ module top$lanes$1$taps$rows$ring$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$ring$is_one
 module top$lanes$1$taps$rows$ring$is_short(d,q,clock);
     
@@ -4899,11 +5229,28 @@ module top$lanes$1$taps$rows$ring$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$ring$is_short
+module top$lanes$1$taps$rows$ring$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$taps$rows$ring$is_two
 module top$lanes$1$taps$rows$ring$one(d,q,clock);
     
     // Module arguments
@@ -4951,13 +5298,15 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
-    reg [31:0] mem_0_0[479:0];
+    reg [31:0] mem_0_0[478:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[8:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -4967,7 +5316,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$1$taps$rows$ring$ram
 module top$lanes$1$taps$rows$ring$rd(d,q,clock);
@@ -5004,6 +5353,23 @@ module top$lanes$1$taps$rows$ring$short(d,q,clock);
     end
           
 endmodule // top$lanes$1$taps$rows$ring$short
+module top$lanes$1$taps$rows$ring$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$two
 module top$lanes$1$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -5016,10 +5382,10 @@ module top$lanes$1$taps$rows$ring_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$ring_last
 module top$lanes$1$taps$rows$stage$0(d,q,clock);
     

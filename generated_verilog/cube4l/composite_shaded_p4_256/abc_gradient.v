@@ -445,10 +445,10 @@ module top$lanes$0$feed$abc$last_a(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$last_a
 module top$lanes$0$feed$abc$last_b(d,q,clock);
     
@@ -462,10 +462,10 @@ module top$lanes$0$feed$abc$last_b(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$last_b
 module top$lanes$0$feed$abc$last_d(d,q,clock);
     
@@ -479,10 +479,10 @@ module top$lanes$0$feed$abc$last_d(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$last_d
 module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     
@@ -494,7 +494,7 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3fbd;
+    localparam  longest_last = 16'h3fbc;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -521,6 +521,9 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -530,6 +533,9 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -569,6 +575,11 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$0$feed$abc$line_a$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$0$feed$abc$line_a$short short(
         .d(short$d),
         .q(short$q),
@@ -584,6 +595,11 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$0$feed$abc$line_a$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -593,22 +609,27 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -624,7 +645,11 @@ module top$lanes$0$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -651,10 +676,10 @@ module top$lanes$0$feed$abc$line_a$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$line_a$bound
 module top$lanes$0$feed$abc$line_a$head(d,q,clock);
     
@@ -685,10 +710,10 @@ module top$lanes$0$feed$abc$line_a$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$line_a$is_one
 module top$lanes$0$feed$abc$line_a$is_short(d,q,clock);
     
@@ -702,11 +727,28 @@ module top$lanes$0$feed$abc$line_a$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$line_a$is_short
+module top$lanes$0$feed$abc$line_a$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$feed$abc$line_a$is_two
 module top$lanes$0$feed$abc$line_a$one(d,q,clock);
     
     // Module arguments
@@ -754,16 +796,17 @@ module top$lanes$0$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
-    reg [0:0] mem_0_0[16317:0];
-    reg [0:0] mem_0_1[16317:0];
-    reg [0:0] mem_0_2[16317:0];
-    reg [0:0] mem_0_3[16317:0];
-    reg [0:0] mem_0_4[16317:0];
-    reg [0:0] mem_0_5[16317:0];
-    reg [0:0] mem_0_6[16317:0];
-    reg [0:0] mem_0_7[16317:0];
+    reg [0:0] mem_0_0[16316:0];
+    reg [0:0] mem_0_1[16316:0];
+    reg [0:0] mem_0_2[16316:0];
+    reg [0:0] mem_0_3[16316:0];
+    reg [0:0] mem_0_4[16316:0];
+    reg [0:0] mem_0_5[16316:0];
+    reg [0:0] mem_0_6[16316:0];
+    reg [0:0] mem_0_7[16316:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -775,6 +818,7 @@ module top$lanes$0$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -791,7 +835,7 @@ module top$lanes$0$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$0$feed$abc$line_a$ram
 module top$lanes$0$feed$abc$line_a$rd(d,q,clock);
@@ -828,6 +872,23 @@ module top$lanes$0$feed$abc$line_a$short(d,q,clock);
     end
           
 endmodule // top$lanes$0$feed$abc$line_a$short
+module top$lanes$0$feed$abc$line_a$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_a$two
 module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -838,7 +899,7 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -865,6 +926,9 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -874,6 +938,9 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -913,6 +980,11 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$0$feed$abc$line_b$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$0$feed$abc$line_b$short short(
         .d(short$d),
         .q(short$q),
@@ -928,6 +1000,11 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$0$feed$abc$line_b$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -937,22 +1014,27 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -968,7 +1050,11 @@ module top$lanes$0$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -995,10 +1081,10 @@ module top$lanes$0$feed$abc$line_b$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$line_b$bound
 module top$lanes$0$feed$abc$line_b$head(d,q,clock);
     
@@ -1029,10 +1115,10 @@ module top$lanes$0$feed$abc$line_b$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$line_b$is_one
 module top$lanes$0$feed$abc$line_b$is_short(d,q,clock);
     
@@ -1046,11 +1132,28 @@ module top$lanes$0$feed$abc$line_b$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$line_b$is_short
+module top$lanes$0$feed$abc$line_b$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$feed$abc$line_b$is_two
 module top$lanes$0$feed$abc$line_b$one(d,q,clock);
     
     // Module arguments
@@ -1099,13 +1202,15 @@ module top$lanes$0$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem_0_0[62:0];
+    reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[7:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -1115,7 +1220,7 @@ module top$lanes$0$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$0$feed$abc$line_b$ram
 module top$lanes$0$feed$abc$line_b$rd(d,q,clock);
@@ -1152,6 +1257,23 @@ module top$lanes$0$feed$abc$line_b$short(d,q,clock);
     end
           
 endmodule // top$lanes$0$feed$abc$line_b$short
+module top$lanes$0$feed$abc$line_b$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_b$two
 module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1162,7 +1284,7 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -1189,6 +1311,9 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -1198,6 +1323,9 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -1237,6 +1365,11 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$0$feed$abc$line_c$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$0$feed$abc$line_c$short short(
         .d(short$d),
         .q(short$q),
@@ -1252,6 +1385,11 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$0$feed$abc$line_c$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -1261,22 +1399,27 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -1292,7 +1435,11 @@ module top$lanes$0$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -1319,10 +1466,10 @@ module top$lanes$0$feed$abc$line_c$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$line_c$bound
 module top$lanes$0$feed$abc$line_c$head(d,q,clock);
     
@@ -1353,10 +1500,10 @@ module top$lanes$0$feed$abc$line_c$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$line_c$is_one
 module top$lanes$0$feed$abc$line_c$is_short(d,q,clock);
     
@@ -1370,11 +1517,28 @@ module top$lanes$0$feed$abc$line_c$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$line_c$is_short
+module top$lanes$0$feed$abc$line_c$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$feed$abc$line_c$is_two
 module top$lanes$0$feed$abc$line_c$one(d,q,clock);
     
     // Module arguments
@@ -1423,13 +1587,15 @@ module top$lanes$0$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem_0_0[62:0];
+    reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[7:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -1439,7 +1605,7 @@ module top$lanes$0$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$0$feed$abc$line_c$ram
 module top$lanes$0$feed$abc$line_c$rd(d,q,clock);
@@ -1476,6 +1642,23 @@ module top$lanes$0$feed$abc$line_c$short(d,q,clock);
     end
           
 endmodule // top$lanes$0$feed$abc$line_c$short
+module top$lanes$0$feed$abc$line_c$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_c$two
 module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1486,7 +1669,7 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3fbe;
+    localparam  longest_last = 16'h3fbd;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -1513,6 +1696,9 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -1522,6 +1708,9 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -1561,6 +1750,11 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$0$feed$abc$line_d$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$0$feed$abc$line_d$short short(
         .d(short$d),
         .q(short$q),
@@ -1576,6 +1770,11 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$0$feed$abc$line_d$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -1585,22 +1784,27 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -1616,7 +1820,11 @@ module top$lanes$0$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -1643,10 +1851,10 @@ module top$lanes$0$feed$abc$line_d$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$line_d$bound
 module top$lanes$0$feed$abc$line_d$head(d,q,clock);
     
@@ -1677,10 +1885,10 @@ module top$lanes$0$feed$abc$line_d$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$line_d$is_one
 module top$lanes$0$feed$abc$line_d$is_short(d,q,clock);
     
@@ -1694,11 +1902,28 @@ module top$lanes$0$feed$abc$line_d$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$feed$abc$line_d$is_short
+module top$lanes$0$feed$abc$line_d$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$feed$abc$line_d$is_two
 module top$lanes$0$feed$abc$line_d$one(d,q,clock);
     
     // Module arguments
@@ -1746,16 +1971,17 @@ module top$lanes$0$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
-    reg [0:0] mem_0_0[16318:0];
-    reg [0:0] mem_0_1[16318:0];
-    reg [0:0] mem_0_2[16318:0];
-    reg [0:0] mem_0_3[16318:0];
-    reg [0:0] mem_0_4[16318:0];
-    reg [0:0] mem_0_5[16318:0];
-    reg [0:0] mem_0_6[16318:0];
-    reg [0:0] mem_0_7[16318:0];
+    reg [0:0] mem_0_0[16317:0];
+    reg [0:0] mem_0_1[16317:0];
+    reg [0:0] mem_0_2[16317:0];
+    reg [0:0] mem_0_3[16317:0];
+    reg [0:0] mem_0_4[16317:0];
+    reg [0:0] mem_0_5[16317:0];
+    reg [0:0] mem_0_6[16317:0];
+    reg [0:0] mem_0_7[16317:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -1767,6 +1993,7 @@ module top$lanes$0$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -1783,7 +2010,7 @@ module top$lanes$0$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$0$feed$abc$line_d$ram
 module top$lanes$0$feed$abc$line_d$rd(d,q,clock);
@@ -1820,6 +2047,23 @@ module top$lanes$0$feed$abc$line_d$short(d,q,clock);
     end
           
 endmodule // top$lanes$0$feed$abc$line_d$short
+module top$lanes$0$feed$abc$line_d$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$feed$abc$line_d$two
 module top$lanes$0$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -2352,10 +2596,10 @@ module top$lanes$1$feed$abc$last_a(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$last_a
 module top$lanes$1$feed$abc$last_b(d,q,clock);
     
@@ -2369,10 +2613,10 @@ module top$lanes$1$feed$abc$last_b(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$last_b
 module top$lanes$1$feed$abc$last_d(d,q,clock);
     
@@ -2386,10 +2630,10 @@ module top$lanes$1$feed$abc$last_d(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$last_d
 module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     
@@ -2401,7 +2645,7 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3fbd;
+    localparam  longest_last = 16'h3fbc;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -2428,6 +2672,9 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -2437,6 +2684,9 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -2476,6 +2726,11 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$1$feed$abc$line_a$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$1$feed$abc$line_a$short short(
         .d(short$d),
         .q(short$q),
@@ -2491,6 +2746,11 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$1$feed$abc$line_a$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -2500,22 +2760,27 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -2531,7 +2796,11 @@ module top$lanes$1$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -2558,10 +2827,10 @@ module top$lanes$1$feed$abc$line_a$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$line_a$bound
 module top$lanes$1$feed$abc$line_a$head(d,q,clock);
     
@@ -2592,10 +2861,10 @@ module top$lanes$1$feed$abc$line_a$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$line_a$is_one
 module top$lanes$1$feed$abc$line_a$is_short(d,q,clock);
     
@@ -2609,11 +2878,28 @@ module top$lanes$1$feed$abc$line_a$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$line_a$is_short
+module top$lanes$1$feed$abc$line_a$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$feed$abc$line_a$is_two
 module top$lanes$1$feed$abc$line_a$one(d,q,clock);
     
     // Module arguments
@@ -2661,16 +2947,17 @@ module top$lanes$1$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
-    reg [0:0] mem_0_0[16317:0];
-    reg [0:0] mem_0_1[16317:0];
-    reg [0:0] mem_0_2[16317:0];
-    reg [0:0] mem_0_3[16317:0];
-    reg [0:0] mem_0_4[16317:0];
-    reg [0:0] mem_0_5[16317:0];
-    reg [0:0] mem_0_6[16317:0];
-    reg [0:0] mem_0_7[16317:0];
+    reg [0:0] mem_0_0[16316:0];
+    reg [0:0] mem_0_1[16316:0];
+    reg [0:0] mem_0_2[16316:0];
+    reg [0:0] mem_0_3[16316:0];
+    reg [0:0] mem_0_4[16316:0];
+    reg [0:0] mem_0_5[16316:0];
+    reg [0:0] mem_0_6[16316:0];
+    reg [0:0] mem_0_7[16316:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -2682,6 +2969,7 @@ module top$lanes$1$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -2698,7 +2986,7 @@ module top$lanes$1$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$1$feed$abc$line_a$ram
 module top$lanes$1$feed$abc$line_a$rd(d,q,clock);
@@ -2735,6 +3023,23 @@ module top$lanes$1$feed$abc$line_a$short(d,q,clock);
     end
           
 endmodule // top$lanes$1$feed$abc$line_a$short
+module top$lanes$1$feed$abc$line_a$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_a$two
 module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -2745,7 +3050,7 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -2772,6 +3077,9 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -2781,6 +3089,9 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -2820,6 +3131,11 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$1$feed$abc$line_b$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$1$feed$abc$line_b$short short(
         .d(short$d),
         .q(short$q),
@@ -2835,6 +3151,11 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$1$feed$abc$line_b$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -2844,22 +3165,27 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -2875,7 +3201,11 @@ module top$lanes$1$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -2902,10 +3232,10 @@ module top$lanes$1$feed$abc$line_b$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$line_b$bound
 module top$lanes$1$feed$abc$line_b$head(d,q,clock);
     
@@ -2936,10 +3266,10 @@ module top$lanes$1$feed$abc$line_b$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$line_b$is_one
 module top$lanes$1$feed$abc$line_b$is_short(d,q,clock);
     
@@ -2953,11 +3283,28 @@ module top$lanes$1$feed$abc$line_b$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$line_b$is_short
+module top$lanes$1$feed$abc$line_b$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$feed$abc$line_b$is_two
 module top$lanes$1$feed$abc$line_b$one(d,q,clock);
     
     // Module arguments
@@ -3006,13 +3353,15 @@ module top$lanes$1$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem_0_0[62:0];
+    reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[7:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -3022,7 +3371,7 @@ module top$lanes$1$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$1$feed$abc$line_b$ram
 module top$lanes$1$feed$abc$line_b$rd(d,q,clock);
@@ -3059,6 +3408,23 @@ module top$lanes$1$feed$abc$line_b$short(d,q,clock);
     end
           
 endmodule // top$lanes$1$feed$abc$line_b$short
+module top$lanes$1$feed$abc$line_b$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_b$two
 module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -3069,7 +3435,7 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -3096,6 +3462,9 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -3105,6 +3474,9 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -3144,6 +3516,11 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$1$feed$abc$line_c$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$1$feed$abc$line_c$short short(
         .d(short$d),
         .q(short$q),
@@ -3159,6 +3536,11 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$1$feed$abc$line_c$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -3168,22 +3550,27 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -3199,7 +3586,11 @@ module top$lanes$1$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -3226,10 +3617,10 @@ module top$lanes$1$feed$abc$line_c$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$line_c$bound
 module top$lanes$1$feed$abc$line_c$head(d,q,clock);
     
@@ -3260,10 +3651,10 @@ module top$lanes$1$feed$abc$line_c$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$line_c$is_one
 module top$lanes$1$feed$abc$line_c$is_short(d,q,clock);
     
@@ -3277,11 +3668,28 @@ module top$lanes$1$feed$abc$line_c$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$line_c$is_short
+module top$lanes$1$feed$abc$line_c$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$feed$abc$line_c$is_two
 module top$lanes$1$feed$abc$line_c$one(d,q,clock);
     
     // Module arguments
@@ -3330,13 +3738,15 @@ module top$lanes$1$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem_0_0[62:0];
+    reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[7:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -3346,7 +3756,7 @@ module top$lanes$1$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$1$feed$abc$line_c$ram
 module top$lanes$1$feed$abc$line_c$rd(d,q,clock);
@@ -3383,6 +3793,23 @@ module top$lanes$1$feed$abc$line_c$short(d,q,clock);
     end
           
 endmodule // top$lanes$1$feed$abc$line_c$short
+module top$lanes$1$feed$abc$line_c$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_c$two
 module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -3393,7 +3820,7 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3fbe;
+    localparam  longest_last = 16'h3fbd;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -3420,6 +3847,9 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -3429,6 +3859,9 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -3468,6 +3901,11 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$1$feed$abc$line_d$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$1$feed$abc$line_d$short short(
         .d(short$d),
         .q(short$q),
@@ -3483,6 +3921,11 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$1$feed$abc$line_d$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -3492,22 +3935,27 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -3523,7 +3971,11 @@ module top$lanes$1$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -3550,10 +4002,10 @@ module top$lanes$1$feed$abc$line_d$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$line_d$bound
 module top$lanes$1$feed$abc$line_d$head(d,q,clock);
     
@@ -3584,10 +4036,10 @@ module top$lanes$1$feed$abc$line_d$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$line_d$is_one
 module top$lanes$1$feed$abc$line_d$is_short(d,q,clock);
     
@@ -3601,11 +4053,28 @@ module top$lanes$1$feed$abc$line_d$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$feed$abc$line_d$is_short
+module top$lanes$1$feed$abc$line_d$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$feed$abc$line_d$is_two
 module top$lanes$1$feed$abc$line_d$one(d,q,clock);
     
     // Module arguments
@@ -3653,16 +4122,17 @@ module top$lanes$1$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
-    reg [0:0] mem_0_0[16318:0];
-    reg [0:0] mem_0_1[16318:0];
-    reg [0:0] mem_0_2[16318:0];
-    reg [0:0] mem_0_3[16318:0];
-    reg [0:0] mem_0_4[16318:0];
-    reg [0:0] mem_0_5[16318:0];
-    reg [0:0] mem_0_6[16318:0];
-    reg [0:0] mem_0_7[16318:0];
+    reg [0:0] mem_0_0[16317:0];
+    reg [0:0] mem_0_1[16317:0];
+    reg [0:0] mem_0_2[16317:0];
+    reg [0:0] mem_0_3[16317:0];
+    reg [0:0] mem_0_4[16317:0];
+    reg [0:0] mem_0_5[16317:0];
+    reg [0:0] mem_0_6[16317:0];
+    reg [0:0] mem_0_7[16317:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -3674,6 +4144,7 @@ module top$lanes$1$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -3690,7 +4161,7 @@ module top$lanes$1$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$1$feed$abc$line_d$ram
 module top$lanes$1$feed$abc$line_d$rd(d,q,clock);
@@ -3727,6 +4198,23 @@ module top$lanes$1$feed$abc$line_d$short(d,q,clock);
     end
           
 endmodule // top$lanes$1$feed$abc$line_d$short
+module top$lanes$1$feed$abc$line_d$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$feed$abc$line_d$two
 module top$lanes$1$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -4259,10 +4747,10 @@ module top$lanes$2$feed$abc$last_a(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$last_a
 module top$lanes$2$feed$abc$last_b(d,q,clock);
     
@@ -4276,10 +4764,10 @@ module top$lanes$2$feed$abc$last_b(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$last_b
 module top$lanes$2$feed$abc$last_d(d,q,clock);
     
@@ -4293,10 +4781,10 @@ module top$lanes$2$feed$abc$last_d(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$last_d
 module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     
@@ -4308,7 +4796,7 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3fbd;
+    localparam  longest_last = 16'h3fbc;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -4335,6 +4823,9 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -4344,6 +4835,9 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -4383,6 +4877,11 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$2$feed$abc$line_a$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$2$feed$abc$line_a$short short(
         .d(short$d),
         .q(short$q),
@@ -4398,6 +4897,11 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$2$feed$abc$line_a$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -4407,22 +4911,27 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -4438,7 +4947,11 @@ module top$lanes$2$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -4465,10 +4978,10 @@ module top$lanes$2$feed$abc$line_a$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$line_a$bound
 module top$lanes$2$feed$abc$line_a$head(d,q,clock);
     
@@ -4499,10 +5012,10 @@ module top$lanes$2$feed$abc$line_a$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$line_a$is_one
 module top$lanes$2$feed$abc$line_a$is_short(d,q,clock);
     
@@ -4516,11 +5029,28 @@ module top$lanes$2$feed$abc$line_a$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$line_a$is_short
+module top$lanes$2$feed$abc$line_a$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$feed$abc$line_a$is_two
 module top$lanes$2$feed$abc$line_a$one(d,q,clock);
     
     // Module arguments
@@ -4568,16 +5098,17 @@ module top$lanes$2$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
-    reg [0:0] mem_0_0[16317:0];
-    reg [0:0] mem_0_1[16317:0];
-    reg [0:0] mem_0_2[16317:0];
-    reg [0:0] mem_0_3[16317:0];
-    reg [0:0] mem_0_4[16317:0];
-    reg [0:0] mem_0_5[16317:0];
-    reg [0:0] mem_0_6[16317:0];
-    reg [0:0] mem_0_7[16317:0];
+    reg [0:0] mem_0_0[16316:0];
+    reg [0:0] mem_0_1[16316:0];
+    reg [0:0] mem_0_2[16316:0];
+    reg [0:0] mem_0_3[16316:0];
+    reg [0:0] mem_0_4[16316:0];
+    reg [0:0] mem_0_5[16316:0];
+    reg [0:0] mem_0_6[16316:0];
+    reg [0:0] mem_0_7[16316:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -4589,6 +5120,7 @@ module top$lanes$2$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -4605,7 +5137,7 @@ module top$lanes$2$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$2$feed$abc$line_a$ram
 module top$lanes$2$feed$abc$line_a$rd(d,q,clock);
@@ -4642,6 +5174,23 @@ module top$lanes$2$feed$abc$line_a$short(d,q,clock);
     end
           
 endmodule // top$lanes$2$feed$abc$line_a$short
+module top$lanes$2$feed$abc$line_a$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_a$two
 module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -4652,7 +5201,7 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -4679,6 +5228,9 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -4688,6 +5240,9 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -4727,6 +5282,11 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$2$feed$abc$line_b$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$2$feed$abc$line_b$short short(
         .d(short$d),
         .q(short$q),
@@ -4742,6 +5302,11 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$2$feed$abc$line_b$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -4751,22 +5316,27 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -4782,7 +5352,11 @@ module top$lanes$2$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -4809,10 +5383,10 @@ module top$lanes$2$feed$abc$line_b$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$line_b$bound
 module top$lanes$2$feed$abc$line_b$head(d,q,clock);
     
@@ -4843,10 +5417,10 @@ module top$lanes$2$feed$abc$line_b$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$line_b$is_one
 module top$lanes$2$feed$abc$line_b$is_short(d,q,clock);
     
@@ -4860,11 +5434,28 @@ module top$lanes$2$feed$abc$line_b$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$line_b$is_short
+module top$lanes$2$feed$abc$line_b$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$feed$abc$line_b$is_two
 module top$lanes$2$feed$abc$line_b$one(d,q,clock);
     
     // Module arguments
@@ -4913,13 +5504,15 @@ module top$lanes$2$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem_0_0[62:0];
+    reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[7:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -4929,7 +5522,7 @@ module top$lanes$2$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$2$feed$abc$line_b$ram
 module top$lanes$2$feed$abc$line_b$rd(d,q,clock);
@@ -4966,6 +5559,23 @@ module top$lanes$2$feed$abc$line_b$short(d,q,clock);
     end
           
 endmodule // top$lanes$2$feed$abc$line_b$short
+module top$lanes$2$feed$abc$line_b$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_b$two
 module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -4976,7 +5586,7 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -5003,6 +5613,9 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -5012,6 +5625,9 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -5051,6 +5667,11 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$2$feed$abc$line_c$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$2$feed$abc$line_c$short short(
         .d(short$d),
         .q(short$q),
@@ -5066,6 +5687,11 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$2$feed$abc$line_c$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -5075,22 +5701,27 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -5106,7 +5737,11 @@ module top$lanes$2$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -5133,10 +5768,10 @@ module top$lanes$2$feed$abc$line_c$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$line_c$bound
 module top$lanes$2$feed$abc$line_c$head(d,q,clock);
     
@@ -5167,10 +5802,10 @@ module top$lanes$2$feed$abc$line_c$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$line_c$is_one
 module top$lanes$2$feed$abc$line_c$is_short(d,q,clock);
     
@@ -5184,11 +5819,28 @@ module top$lanes$2$feed$abc$line_c$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$line_c$is_short
+module top$lanes$2$feed$abc$line_c$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$feed$abc$line_c$is_two
 module top$lanes$2$feed$abc$line_c$one(d,q,clock);
     
     // Module arguments
@@ -5237,13 +5889,15 @@ module top$lanes$2$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem_0_0[62:0];
+    reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[7:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -5253,7 +5907,7 @@ module top$lanes$2$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$2$feed$abc$line_c$ram
 module top$lanes$2$feed$abc$line_c$rd(d,q,clock);
@@ -5290,6 +5944,23 @@ module top$lanes$2$feed$abc$line_c$short(d,q,clock);
     end
           
 endmodule // top$lanes$2$feed$abc$line_c$short
+module top$lanes$2$feed$abc$line_c$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_c$two
 module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -5300,7 +5971,7 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3fbe;
+    localparam  longest_last = 16'h3fbd;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -5327,6 +5998,9 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -5336,6 +6010,9 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -5375,6 +6052,11 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$2$feed$abc$line_d$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$2$feed$abc$line_d$short short(
         .d(short$d),
         .q(short$q),
@@ -5390,6 +6072,11 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$2$feed$abc$line_d$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -5399,22 +6086,27 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -5430,7 +6122,11 @@ module top$lanes$2$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -5457,10 +6153,10 @@ module top$lanes$2$feed$abc$line_d$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$line_d$bound
 module top$lanes$2$feed$abc$line_d$head(d,q,clock);
     
@@ -5491,10 +6187,10 @@ module top$lanes$2$feed$abc$line_d$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$line_d$is_one
 module top$lanes$2$feed$abc$line_d$is_short(d,q,clock);
     
@@ -5508,11 +6204,28 @@ module top$lanes$2$feed$abc$line_d$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$feed$abc$line_d$is_short
+module top$lanes$2$feed$abc$line_d$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$feed$abc$line_d$is_two
 module top$lanes$2$feed$abc$line_d$one(d,q,clock);
     
     // Module arguments
@@ -5560,16 +6273,17 @@ module top$lanes$2$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
-    reg [0:0] mem_0_0[16318:0];
-    reg [0:0] mem_0_1[16318:0];
-    reg [0:0] mem_0_2[16318:0];
-    reg [0:0] mem_0_3[16318:0];
-    reg [0:0] mem_0_4[16318:0];
-    reg [0:0] mem_0_5[16318:0];
-    reg [0:0] mem_0_6[16318:0];
-    reg [0:0] mem_0_7[16318:0];
+    reg [0:0] mem_0_0[16317:0];
+    reg [0:0] mem_0_1[16317:0];
+    reg [0:0] mem_0_2[16317:0];
+    reg [0:0] mem_0_3[16317:0];
+    reg [0:0] mem_0_4[16317:0];
+    reg [0:0] mem_0_5[16317:0];
+    reg [0:0] mem_0_6[16317:0];
+    reg [0:0] mem_0_7[16317:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -5581,6 +6295,7 @@ module top$lanes$2$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -5597,7 +6312,7 @@ module top$lanes$2$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$2$feed$abc$line_d$ram
 module top$lanes$2$feed$abc$line_d$rd(d,q,clock);
@@ -5634,6 +6349,23 @@ module top$lanes$2$feed$abc$line_d$short(d,q,clock);
     end
           
 endmodule // top$lanes$2$feed$abc$line_d$short
+module top$lanes$2$feed$abc$line_d$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$feed$abc$line_d$two
 module top$lanes$2$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments
@@ -6166,10 +6898,10 @@ module top$lanes$3$feed$abc$last_a(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$last_a
 module top$lanes$3$feed$abc$last_b(d,q,clock);
     
@@ -6183,10 +6915,10 @@ module top$lanes$3$feed$abc$last_b(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$last_b
 module top$lanes$3$feed$abc$last_d(d,q,clock);
     
@@ -6200,10 +6932,10 @@ module top$lanes$3$feed$abc$last_d(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$last_d
 module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     
@@ -6215,7 +6947,7 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3fbd;
+    localparam  longest_last = 16'h3fbc;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -6242,6 +6974,9 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -6251,6 +6986,9 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -6290,6 +7028,11 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$3$feed$abc$line_a$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$3$feed$abc$line_a$short short(
         .d(short$d),
         .q(short$q),
@@ -6305,6 +7048,11 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$3$feed$abc$line_a$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -6314,22 +7062,27 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -6345,7 +7098,11 @@ module top$lanes$3$feed$abc$line_a(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -6372,10 +7129,10 @@ module top$lanes$3$feed$abc$line_a$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$line_a$bound
 module top$lanes$3$feed$abc$line_a$head(d,q,clock);
     
@@ -6406,10 +7163,10 @@ module top$lanes$3$feed$abc$line_a$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$line_a$is_one
 module top$lanes$3$feed$abc$line_a$is_short(d,q,clock);
     
@@ -6423,11 +7180,28 @@ module top$lanes$3$feed$abc$line_a$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$line_a$is_short
+module top$lanes$3$feed$abc$line_a$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$feed$abc$line_a$is_two
 module top$lanes$3$feed$abc$line_a$one(d,q,clock);
     
     // Module arguments
@@ -6475,16 +7249,17 @@ module top$lanes$3$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
-    reg [0:0] mem_0_0[16317:0];
-    reg [0:0] mem_0_1[16317:0];
-    reg [0:0] mem_0_2[16317:0];
-    reg [0:0] mem_0_3[16317:0];
-    reg [0:0] mem_0_4[16317:0];
-    reg [0:0] mem_0_5[16317:0];
-    reg [0:0] mem_0_6[16317:0];
-    reg [0:0] mem_0_7[16317:0];
+    reg [0:0] mem_0_0[16316:0];
+    reg [0:0] mem_0_1[16316:0];
+    reg [0:0] mem_0_2[16316:0];
+    reg [0:0] mem_0_3[16316:0];
+    reg [0:0] mem_0_4[16316:0];
+    reg [0:0] mem_0_5[16316:0];
+    reg [0:0] mem_0_6[16316:0];
+    reg [0:0] mem_0_7[16316:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -6496,6 +7271,7 @@ module top$lanes$3$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -6512,7 +7288,7 @@ module top$lanes$3$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$3$feed$abc$line_a$ram
 module top$lanes$3$feed$abc$line_a$rd(d,q,clock);
@@ -6549,6 +7325,23 @@ module top$lanes$3$feed$abc$line_a$short(d,q,clock);
     end
           
 endmodule // top$lanes$3$feed$abc$line_a$short
+module top$lanes$3$feed$abc$line_a$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_a$two
 module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -6559,7 +7352,7 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -6586,6 +7379,9 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -6595,6 +7391,9 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -6634,6 +7433,11 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$3$feed$abc$line_b$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$3$feed$abc$line_b$short short(
         .d(short$d),
         .q(short$q),
@@ -6649,6 +7453,11 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$3$feed$abc$line_b$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -6658,22 +7467,27 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -6689,7 +7503,11 @@ module top$lanes$3$feed$abc$line_b(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -6716,10 +7534,10 @@ module top$lanes$3$feed$abc$line_b$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$line_b$bound
 module top$lanes$3$feed$abc$line_b$head(d,q,clock);
     
@@ -6750,10 +7568,10 @@ module top$lanes$3$feed$abc$line_b$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$line_b$is_one
 module top$lanes$3$feed$abc$line_b$is_short(d,q,clock);
     
@@ -6767,11 +7585,28 @@ module top$lanes$3$feed$abc$line_b$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$line_b$is_short
+module top$lanes$3$feed$abc$line_b$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$feed$abc$line_b$is_two
 module top$lanes$3$feed$abc$line_b$one(d,q,clock);
     
     // Module arguments
@@ -6820,13 +7655,15 @@ module top$lanes$3$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem_0_0[62:0];
+    reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[7:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -6836,7 +7673,7 @@ module top$lanes$3$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$3$feed$abc$line_b$ram
 module top$lanes$3$feed$abc$line_b$rd(d,q,clock);
@@ -6873,6 +7710,23 @@ module top$lanes$3$feed$abc$line_b$short(d,q,clock);
     end
           
 endmodule // top$lanes$3$feed$abc$line_b$short
+module top$lanes$3$feed$abc$line_b$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_b$two
 module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -6883,7 +7737,7 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -6910,6 +7764,9 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -6919,6 +7776,9 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -6958,6 +7818,11 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$3$feed$abc$line_c$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$3$feed$abc$line_c$short short(
         .d(short$d),
         .q(short$q),
@@ -6973,6 +7838,11 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$3$feed$abc$line_c$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -6982,22 +7852,27 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -7013,7 +7888,11 @@ module top$lanes$3$feed$abc$line_c(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -7040,10 +7919,10 @@ module top$lanes$3$feed$abc$line_c$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$line_c$bound
 module top$lanes$3$feed$abc$line_c$head(d,q,clock);
     
@@ -7074,10 +7953,10 @@ module top$lanes$3$feed$abc$line_c$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$line_c$is_one
 module top$lanes$3$feed$abc$line_c$is_short(d,q,clock);
     
@@ -7091,11 +7970,28 @@ module top$lanes$3$feed$abc$line_c$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$line_c$is_short
+module top$lanes$3$feed$abc$line_c$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$feed$abc$line_c$is_two
 module top$lanes$3$feed$abc$line_c$one(d,q,clock);
     
     // Module arguments
@@ -7144,13 +8040,15 @@ module top$lanes$3$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [7:0] mem_0_0[62:0];
+    reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[7:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -7160,7 +8058,7 @@ module top$lanes$3$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$3$feed$abc$line_c$ram
 module top$lanes$3$feed$abc$line_c$rd(d,q,clock);
@@ -7197,6 +8095,23 @@ module top$lanes$3$feed$abc$line_c$short(d,q,clock);
     end
           
 endmodule // top$lanes$3$feed$abc$line_c$short
+module top$lanes$3$feed$abc$line_c$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_c$two
 module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7207,7 +8122,7 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3fbe;
+    localparam  longest_last = 16'h3fbd;
     localparam  has_ring = 1'b1;
     localparam  mask = 16'hff;
     
@@ -7234,6 +8149,9 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  [15:0] one$d;
     wire  [15:0] one$q;
     reg  one$clock;
+    reg  [15:0] two$d;
+    wire  [15:0] two$q;
+    reg  two$clock;
     reg  [15:0] short$d;
     wire  [15:0] short$q;
     reg  short$clock;
@@ -7243,6 +8161,9 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -7282,6 +8203,11 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$3$feed$abc$line_d$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$3$feed$abc$line_d$short short(
         .d(short$d),
         .q(short$q),
@@ -7297,6 +8223,11 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$3$feed$abc$line_d$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [15:0] data_out_pass;
@@ -7306,22 +8237,27 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -7337,7 +8273,11 @@ module top$lanes$3$feed$abc$line_d(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -7364,10 +8304,10 @@ module top$lanes$3$feed$abc$line_d$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$line_d$bound
 module top$lanes$3$feed$abc$line_d$head(d,q,clock);
     
@@ -7398,10 +8338,10 @@ module top$lanes$3$feed$abc$line_d$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$line_d$is_one
 module top$lanes$3$feed$abc$line_d$is_short(d,q,clock);
     
@@ -7415,11 +8355,28 @@ module top$lanes$3$feed$abc$line_d$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$feed$abc$line_d$is_short
+module top$lanes$3$feed$abc$line_d$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$feed$abc$line_d$is_two
 module top$lanes$3$feed$abc$line_d$one(d,q,clock);
     
     // Module arguments
@@ -7467,16 +8424,17 @@ module top$lanes$3$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
-    reg [0:0] mem_0_0[16318:0];
-    reg [0:0] mem_0_1[16318:0];
-    reg [0:0] mem_0_2[16318:0];
-    reg [0:0] mem_0_3[16318:0];
-    reg [0:0] mem_0_4[16318:0];
-    reg [0:0] mem_0_5[16318:0];
-    reg [0:0] mem_0_6[16318:0];
-    reg [0:0] mem_0_7[16318:0];
+    reg [0:0] mem_0_0[16317:0];
+    reg [0:0] mem_0_1[16317:0];
+    reg [0:0] mem_0_2[16317:0];
+    reg [0:0] mem_0_3[16317:0];
+    reg [0:0] mem_0_4[16317:0];
+    reg [0:0] mem_0_5[16317:0];
+    reg [0:0] mem_0_6[16317:0];
+    reg [0:0] mem_0_7[16317:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -7488,6 +8446,7 @@ module top$lanes$3$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -7504,7 +8463,7 @@ module top$lanes$3$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$3$feed$abc$line_d$ram
 module top$lanes$3$feed$abc$line_d$rd(d,q,clock);
@@ -7541,6 +8500,23 @@ module top$lanes$3$feed$abc$line_d$short(d,q,clock);
     end
           
 endmodule // top$lanes$3$feed$abc$line_d$short
+module top$lanes$3$feed$abc$line_d$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$feed$abc$line_d$two
 module top$lanes$3$feed$abc$prev_xm(d,q,clock);
     
     // Module arguments

@@ -125,9 +125,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] lanes$0$a_n_s;
     reg  [15:0] lanes$0$a_n_beam;
     reg  [15:0] lanes$0$a_n_b;
+    reg  [15:0] lanes$0$c_n_s;
+    reg  [15:0] lanes$0$c_n_beam;
+    reg  [15:0] lanes$0$c_n_b;
     reg  [15:0] lanes$0$n_s;
     reg  [15:0] lanes$0$n_beam;
-    reg  [15:0] lanes$0$n_b;
     reg  lanes$0$load_enable;
     reg  [7:0] lanes$0$load_module;
     reg  [15:0] lanes$0$load_address;
@@ -168,9 +170,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] lanes$1$a_n_s;
     reg  [15:0] lanes$1$a_n_beam;
     reg  [15:0] lanes$1$a_n_b;
+    reg  [15:0] lanes$1$c_n_s;
+    reg  [15:0] lanes$1$c_n_beam;
+    reg  [15:0] lanes$1$c_n_b;
     reg  [15:0] lanes$1$n_s;
     reg  [15:0] lanes$1$n_beam;
-    reg  [15:0] lanes$1$n_b;
     reg  lanes$1$load_enable;
     reg  [7:0] lanes$1$load_module;
     reg  [15:0] lanes$1$load_address;
@@ -211,9 +215,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] lanes$2$a_n_s;
     reg  [15:0] lanes$2$a_n_beam;
     reg  [15:0] lanes$2$a_n_b;
+    reg  [15:0] lanes$2$c_n_s;
+    reg  [15:0] lanes$2$c_n_beam;
+    reg  [15:0] lanes$2$c_n_b;
     reg  [15:0] lanes$2$n_s;
     reg  [15:0] lanes$2$n_beam;
-    reg  [15:0] lanes$2$n_b;
     reg  lanes$2$load_enable;
     reg  [7:0] lanes$2$load_module;
     reg  [15:0] lanes$2$load_address;
@@ -254,9 +260,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] lanes$3$a_n_s;
     reg  [15:0] lanes$3$a_n_beam;
     reg  [15:0] lanes$3$a_n_b;
+    reg  [15:0] lanes$3$c_n_s;
+    reg  [15:0] lanes$3$c_n_beam;
+    reg  [15:0] lanes$3$c_n_b;
     reg  [15:0] lanes$3$n_s;
     reg  [15:0] lanes$3$n_beam;
-    reg  [15:0] lanes$3$n_b;
     reg  lanes$3$load_enable;
     reg  [7:0] lanes$3$load_module;
     reg  [15:0] lanes$3$load_address;
@@ -379,6 +387,21 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] ns_left$d;
     wire  [15:0] ns_left$q;
     reg  ns_left$clock;
+    reg  nb_end$d;
+    wire  nb_end$q;
+    reg  nb_end$clock;
+    reg  nbeam_end$d;
+    wire  nbeam_end$q;
+    reg  nbeam_end$clock;
+    reg  ns_end$d;
+    wire  ns_end$q;
+    reg  ns_end$clock;
+    reg  ny_last_zero$d;
+    wire  ny_last_zero$q;
+    reg  ny_last_zero$clock;
+    reg  b_last_zero$d;
+    wire  b_last_zero$q;
+    reg  b_last_zero$clock;
     
     // Local signals
     reg  e_run;
@@ -408,9 +431,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .a_n_s(lanes$0$a_n_s),
         .a_n_beam(lanes$0$a_n_beam),
         .a_n_b(lanes$0$a_n_b),
+        .c_n_s(lanes$0$c_n_s),
+        .c_n_beam(lanes$0$c_n_beam),
+        .c_n_b(lanes$0$c_n_b),
         .n_s(lanes$0$n_s),
         .n_beam(lanes$0$n_beam),
-        .n_b(lanes$0$n_b),
         .load_enable(lanes$0$load_enable),
         .load_module(lanes$0$load_module),
         .load_address(lanes$0$load_address),
@@ -453,9 +478,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .a_n_s(lanes$1$a_n_s),
         .a_n_beam(lanes$1$a_n_beam),
         .a_n_b(lanes$1$a_n_b),
+        .c_n_s(lanes$1$c_n_s),
+        .c_n_beam(lanes$1$c_n_beam),
+        .c_n_b(lanes$1$c_n_b),
         .n_s(lanes$1$n_s),
         .n_beam(lanes$1$n_beam),
-        .n_b(lanes$1$n_b),
         .load_enable(lanes$1$load_enable),
         .load_module(lanes$1$load_module),
         .load_address(lanes$1$load_address),
@@ -498,9 +525,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .a_n_s(lanes$2$a_n_s),
         .a_n_beam(lanes$2$a_n_beam),
         .a_n_b(lanes$2$a_n_b),
+        .c_n_s(lanes$2$c_n_s),
+        .c_n_beam(lanes$2$c_n_beam),
+        .c_n_b(lanes$2$c_n_b),
         .n_s(lanes$2$n_s),
         .n_beam(lanes$2$n_beam),
-        .n_b(lanes$2$n_b),
         .load_enable(lanes$2$load_enable),
         .load_module(lanes$2$load_module),
         .load_address(lanes$2$load_address),
@@ -543,9 +572,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .a_n_s(lanes$3$a_n_s),
         .a_n_beam(lanes$3$a_n_beam),
         .a_n_b(lanes$3$a_n_b),
+        .c_n_s(lanes$3$c_n_s),
+        .c_n_beam(lanes$3$c_n_beam),
+        .c_n_b(lanes$3$c_n_b),
         .n_s(lanes$3$n_s),
         .n_beam(lanes$3$n_beam),
-        .n_b(lanes$3$n_b),
         .load_enable(lanes$3$load_enable),
         .load_module(lanes$3$load_module),
         .load_address(lanes$3$load_address),
@@ -716,6 +747,31 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .q(ns_left$q),
         .clock(ns_left$clock)
     );
+    top$cfb$nb_end nb_end(
+        .d(nb_end$d),
+        .q(nb_end$q),
+        .clock(nb_end$clock)
+    );
+    top$cfb$nbeam_end nbeam_end(
+        .d(nbeam_end$d),
+        .q(nbeam_end$q),
+        .clock(nbeam_end$clock)
+    );
+    top$cfb$ns_end ns_end(
+        .d(ns_end$d),
+        .q(ns_end$q),
+        .clock(ns_end$clock)
+    );
+    top$cfb$ny_last_zero ny_last_zero(
+        .d(ny_last_zero$d),
+        .q(ny_last_zero$q),
+        .clock(ny_last_zero$clock)
+    );
+    top$cfb$b_last_zero b_last_zero(
+        .d(b_last_zero$d),
+        .q(b_last_zero$q),
+        .clock(b_last_zero$clock)
+    );
     
     // Update code
     reg  busy_pass;
@@ -749,6 +805,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_left$clock = clock;
         nbeam_left$clock = clock;
         ns_left$clock = clock;
+        nb_end$clock = clock;
+        nbeam_end$clock = clock;
+        ns_end$clock = clock;
+        ny_last_zero$clock = clock;
+        b_last_zero$clock = clock;
         running$d = running$q;
         ns_c$d = ns_c$q;
         nbeam_c$d = nbeam_c$q;
@@ -778,6 +839,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_left$d = nb_left$q;
         nbeam_left$d = nbeam_left$q;
         ns_left$d = ns_left$q;
+        nb_end$d = nb_end$q;
+        nbeam_end$d = nbeam_end$q;
+        ns_end$d = ns_end$q;
+        ny_last_zero$d = ny_last_zero$q;
+        b_last_zero$d = b_last_zero$q;
         lead$clock = clock;
         lead$reset = reset;
         lead$running = running$q;
@@ -816,6 +882,8 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         b_m1 = beats[('h20)+:(16)] - 'h1;
         ny_last$d = ny_m1;
         b_last$d = b_m1;
+        ny_last_zero$d = ny_m1 == 'h0;
+        b_last_zero$d = b_m1 == 'h0;
         lanes$0$clock = clock;
         lanes$0$dims = dims;
         lanes$0$slices = slices;
@@ -832,9 +900,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$0$a_n_s = e_ns;
         lanes$0$a_n_beam = e_nbeam;
         lanes$0$a_n_b = e_nb;
+        lanes$0$c_n_s = ns_d3$q;
+        lanes$0$c_n_beam = nbeam_d3$q;
+        lanes$0$c_n_b = nb_d3$q;
         lanes$0$n_s = ns_d4$q;
         lanes$0$n_beam = nbeam_d4$q;
-        lanes$0$n_b = nb_d4$q;
         lanes$0$load_enable = load_enable;
         lanes$0$load_module = load_module;
         lanes$0$load_address = load_address;
@@ -875,9 +945,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$1$a_n_s = e_ns;
         lanes$1$a_n_beam = e_nbeam;
         lanes$1$a_n_b = e_nb;
+        lanes$1$c_n_s = ns_d3$q;
+        lanes$1$c_n_beam = nbeam_d3$q;
+        lanes$1$c_n_b = nb_d3$q;
         lanes$1$n_s = ns_d4$q;
         lanes$1$n_beam = nbeam_d4$q;
-        lanes$1$n_b = nb_d4$q;
         lanes$1$load_enable = load_enable;
         lanes$1$load_module = load_module;
         lanes$1$load_address = load_address;
@@ -918,9 +990,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$2$a_n_s = e_ns;
         lanes$2$a_n_beam = e_nbeam;
         lanes$2$a_n_b = e_nb;
+        lanes$2$c_n_s = ns_d3$q;
+        lanes$2$c_n_beam = nbeam_d3$q;
+        lanes$2$c_n_b = nb_d3$q;
         lanes$2$n_s = ns_d4$q;
         lanes$2$n_beam = nbeam_d4$q;
-        lanes$2$n_b = nb_d4$q;
         lanes$2$load_enable = load_enable;
         lanes$2$load_module = load_module;
         lanes$2$load_address = load_address;
@@ -961,9 +1035,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$3$a_n_s = e_ns;
         lanes$3$a_n_beam = e_nbeam;
         lanes$3$a_n_b = e_nb;
+        lanes$3$c_n_s = ns_d3$q;
+        lanes$3$c_n_beam = nbeam_d3$q;
+        lanes$3$c_n_b = nb_d3$q;
         lanes$3$n_s = ns_d4$q;
         lanes$3$n_beam = nbeam_d4$q;
-        lanes$3$n_b = nb_d4$q;
         lanes$3$load_enable = load_enable;
         lanes$3$load_module = load_module;
         lanes$3$load_address = load_address;
@@ -996,25 +1072,33 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
             nb_left$d = b_m1;
             nbeam_left$d = ny_m1;
             ns_left$d = z1 - z0;
+            nb_end$d = b_m1 == 'h0;
+            nbeam_end$d = ny_m1 == 'h0;
+            ns_end$d = z1 == z0;
         end
         if (running$q) begin
-            if (nb_left$q != 'h0) begin
+            if (~nb_end$q) begin
                 nb_c$d = nb_c$q + 'h1;
                 nb_left$d = nb_left$q - 'h1;
+                nb_end$d = nb_left$q == 'h1;
             end
             else begin
                 nb_c$d = 'h0;
                 nb_left$d = b_last$q;
-                if (nbeam_left$q != 'h0) begin
+                nb_end$d = b_last_zero$q;
+                if (~nbeam_end$q) begin
                     nbeam_c$d = nbeam_c$q + 'h1;
                     nbeam_left$d = nbeam_left$q - 'h1;
+                    nbeam_end$d = nbeam_left$q == 'h1;
                 end
                 else begin
                     nbeam_c$d = 'h0;
                     nbeam_left$d = ny_last$q;
-                    if (ns_left$q != 'h0) begin
+                    nbeam_end$d = ny_last_zero$q;
+                    if (~ns_end$q) begin
                         ns_c$d = ns_c$q + 'h1;
                         ns_left$d = ns_left$q - 'h1;
+                        ns_end$d = ns_left$q == 'h1;
                     end
                     else begin
                         running$d = 1'b0;
@@ -1059,7 +1143,24 @@ module top$cfb$b_last(d,q,clock);
     end
           
 endmodule // top$cfb$b_last
-module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$b_last_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$b_last_zero
+module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,c_n_s,c_n_beam,c_n_b,n_s,n_beam,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -1078,9 +1179,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
+    input wire  [15:0] c_n_s;
+    input wire  [15:0] c_n_beam;
+    input wire  [15:0] c_n_b;
     input wire  [15:0] n_s;
     input wire  [15:0] n_beam;
-    input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
     input wire  [15:0] load_address;
@@ -1121,6 +1224,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx$d;
+    wire  [15:0] nx$q;
+    reg  nx$clock;
     reg  [15:0] nx_last$d;
     wire  [15:0] nx_last$q;
     reg  nx_last$clock;
@@ -1133,6 +1239,15 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] border$d;
     wire  [15:0] border$q;
     reg  border$clock;
+    reg  [15:0] b_u$d;
+    wire  [15:0] b_u$q;
+    reg  b_u$clock;
+    reg  [15:0] slab_lo$d;
+    wire  [15:0] slab_lo$q;
+    reg  slab_lo$clock;
+    reg  [15:0] slab_hi$d;
+    wire  [15:0] slab_hi$q;
+    reg  slab_hi$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -1181,6 +1296,12 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  halo_q$d;
     wire  halo_q$q;
     reg  halo_q$clock;
+    reg  [15:0] xc_r$d;
+    wire  [15:0] xc_r$q;
+    reg  xc_r$clock;
+    reg  pad_r$d;
+    wire  pad_r$q;
+    reg  pad_r$clock;
     reg  [15:0] a_u$d;
     wire  [15:0] a_u$q;
     reg  a_u$clock;
@@ -1211,6 +1332,36 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr$d;
     wire  [31:0] addr$q;
     reg  addr$clock;
+    reg  x_last_r$d;
+    wire  x_last_r$q;
+    reg  x_last_r$clock;
+    reg  x_first_r$d;
+    wire  x_first_r$q;
+    reg  x_first_r$clock;
+    reg  y_last_r$d;
+    wire  y_last_r$q;
+    reg  y_last_r$clock;
+    reg  y_first_r$d;
+    wire  y_first_r$q;
+    reg  y_first_r$clock;
+    reg  s_last_r$d;
+    wire  s_last_r$q;
+    reg  s_last_r$clock;
+    reg  [15:0] bx_at_r$d;
+    wire  [15:0] bx_at_r$q;
+    reg  bx_at_r$clock;
+    reg  [15:0] bx_far_r$d;
+    wire  [15:0] bx_far_r$q;
+    reg  bx_far_r$clock;
+    reg  [15:0] b_near_r$d;
+    wire  [15:0] b_near_r$q;
+    reg  b_near_r$clock;
+    reg  [15:0] by_at_r$d;
+    wire  [15:0] by_at_r$q;
+    reg  by_at_r$clock;
+    reg  [15:0] by_far_r$d;
+    wire  [15:0] by_far_r$q;
+    reg  by_far_r$clock;
     reg  [15:0] x_q$d;
     wire  [15:0] x_q$q;
     reg  x_q$clock;
@@ -1249,15 +1400,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  by_q$clock;
     
     // Local signals
-    reg  [15:0] nx;
     reg  [15:0] z0;
     reg  [15:0] z1;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [15:0] b_u;
-    reg  [15:0] slab_lo;
-    reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
     reg  dxn;
@@ -1269,11 +1416,12 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  dx_neg_nz;
     reg  dy_pos;
     reg  dy_neg_nz;
+    reg  [15:0] c_xc;
     reg  [15:0] xc;
     reg  [15:0] a_xc;
     reg  is_pad;
     reg  [2:0] face_c;
-    reg  [15:0] depth;
+    reg  [15:0] c_depth;
     reg  [15:0] bx;
     reg  [15:0] by;
     
@@ -1286,6 +1434,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$0$nx nx(
+        .d(nx$d),
+        .q(nx$q),
+        .clock(nx$clock)
     );
     top$cfb$lanes$0$nx_last nx_last(
         .d(nx_last$d),
@@ -1306,6 +1459,21 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(border$d),
         .q(border$q),
         .clock(border$clock)
+    );
+    top$cfb$lanes$0$b_u b_u(
+        .d(b_u$d),
+        .q(b_u$q),
+        .clock(b_u$clock)
+    );
+    top$cfb$lanes$0$slab_lo slab_lo(
+        .d(slab_lo$d),
+        .q(slab_lo$q),
+        .clock(slab_lo$clock)
+    );
+    top$cfb$lanes$0$slab_hi slab_hi(
+        .d(slab_hi$d),
+        .q(slab_hi$q),
+        .clock(slab_hi$clock)
     );
     top$cfb$lanes$0$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -1367,6 +1535,16 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(halo_q$q),
         .clock(halo_q$clock)
     );
+    top$cfb$lanes$0$xc_r xc_r(
+        .d(xc_r$d),
+        .q(xc_r$q),
+        .clock(xc_r$clock)
+    );
+    top$cfb$lanes$0$pad_r pad_r(
+        .d(pad_r$d),
+        .q(pad_r$q),
+        .clock(pad_r$clock)
+    );
     top$cfb$lanes$0$a_u a_u(
         .d(a_u$d),
         .q(a_u$q),
@@ -1416,6 +1594,56 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(addr$d),
         .q(addr$q),
         .clock(addr$clock)
+    );
+    top$cfb$lanes$0$x_last_r x_last_r(
+        .d(x_last_r$d),
+        .q(x_last_r$q),
+        .clock(x_last_r$clock)
+    );
+    top$cfb$lanes$0$x_first_r x_first_r(
+        .d(x_first_r$d),
+        .q(x_first_r$q),
+        .clock(x_first_r$clock)
+    );
+    top$cfb$lanes$0$y_last_r y_last_r(
+        .d(y_last_r$d),
+        .q(y_last_r$q),
+        .clock(y_last_r$clock)
+    );
+    top$cfb$lanes$0$y_first_r y_first_r(
+        .d(y_first_r$d),
+        .q(y_first_r$q),
+        .clock(y_first_r$clock)
+    );
+    top$cfb$lanes$0$s_last_r s_last_r(
+        .d(s_last_r$d),
+        .q(s_last_r$q),
+        .clock(s_last_r$clock)
+    );
+    top$cfb$lanes$0$bx_at_r bx_at_r(
+        .d(bx_at_r$d),
+        .q(bx_at_r$q),
+        .clock(bx_at_r$clock)
+    );
+    top$cfb$lanes$0$bx_far_r bx_far_r(
+        .d(bx_far_r$d),
+        .q(bx_far_r$q),
+        .clock(bx_far_r$clock)
+    );
+    top$cfb$lanes$0$b_near_r b_near_r(
+        .d(b_near_r$d),
+        .q(b_near_r$q),
+        .clock(b_near_r$clock)
+    );
+    top$cfb$lanes$0$by_at_r by_at_r(
+        .d(by_at_r$d),
+        .q(by_at_r$q),
+        .clock(by_at_r$clock)
+    );
+    top$cfb$lanes$0$by_far_r by_far_r(
+        .d(by_far_r$d),
+        .q(by_far_r$q),
+        .clock(by_far_r$clock)
     );
     top$cfb$lanes$0$x_q x_q(
         .d(x_q$d),
@@ -1509,6 +1737,22 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        xc_r$clock = clock;
+        pad_r$clock = clock;
+        x_last_r$clock = clock;
+        x_first_r$clock = clock;
+        y_last_r$clock = clock;
+        y_first_r$clock = clock;
+        s_last_r$clock = clock;
+        bx_at_r$clock = clock;
+        bx_far_r$clock = clock;
+        b_near_r$clock = clock;
+        by_at_r$clock = clock;
+        by_far_r$clock = clock;
+        nx$clock = clock;
+        b_u$clock = clock;
+        slab_lo$clock = clock;
+        slab_hi$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -1547,6 +1791,22 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        xc_r$d = xc_r$q;
+        pad_r$d = pad_r$q;
+        x_last_r$d = x_last_r$q;
+        x_first_r$d = x_first_r$q;
+        y_last_r$d = y_last_r$q;
+        y_first_r$d = y_first_r$q;
+        s_last_r$d = s_last_r$q;
+        bx_at_r$d = bx_at_r$q;
+        bx_far_r$d = bx_far_r$q;
+        b_near_r$d = b_near_r$q;
+        by_at_r$d = by_at_r$q;
+        by_far_r$d = by_far_r$q;
+        nx$d = nx$q;
+        b_u$d = b_u$q;
+        slab_lo$d = slab_lo$q;
+        slab_hi$d = slab_hi$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -1557,7 +1817,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
-        nx = dims[('h0)+:(16)];
+        nx$d = dims[('h0)+:(16)];
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         nz_last$d = dims[('h20)+:(16)] - 'h1;
@@ -1567,9 +1827,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
-        b_u = address_reg[('h0)+:(16)];
-        slab_lo = address_reg[('h10)+:(16)];
-        slab_hi = address_reg[('h20)+:(16)];
+        b_u$d = address_reg[('h0)+:(16)];
+        slab_lo$d = address_reg[('h10)+:(16)];
+        slab_hi$d = address_reg[('h20)+:(16)];
         dx_abs = dx;
         if (dx['h3f]) begin
             dx_abs = 'h0 - dx;
@@ -1590,7 +1850,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         memory$write_address = load_address;
         memory$write_data = load_data;
         a_xc = (a_n_b << p_shift) | ((lane - a_n_beam - a_n_s) & p_mask);
-        a_pad$d = a_xc >= nx;
+        a_pad$d = a_xc >= nx$q;
         a_u$d = a_xc;
         if (u_from == 'h1) begin
             a_u$d = a_n_beam;
@@ -1613,9 +1873,9 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u;
-        m_w_lo$d = a_w$q * slab_lo;
-        m_w_hi$d = a_w$q * slab_hi;
+        m_v$d = a_v$q * b_u$q;
+        m_w_lo$d = a_w$q * slab_lo$q;
+        m_w_hi$d = a_w$q * slab_hi$q;
         m_pad$d = a_pad$q;
         addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
         if (m_pad$q) begin
@@ -1623,8 +1883,22 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         memory$read_address = 16'(addr$q);
         ext_addr = addr$q;
-        xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
-        is_pad = xc >= nx;
+        c_xc = (c_n_b << p_shift) | ((lane - c_n_beam - c_n_s) & p_mask);
+        xc_r$d = c_xc;
+        pad_r$d = c_xc >= nx$q;
+        xc = xc_r$q;
+        is_pad = pad_r$q;
+        c_depth = z1 - c_n_s;
+        x_last_r$d = c_xc == nx_last$q;
+        x_first_r$d = c_xc == 'h0;
+        y_last_r$d = c_n_beam == ny_last$q;
+        y_first_r$d = c_n_beam == 'h0;
+        s_last_r$d = c_n_s == z1;
+        bx_at_r$d = border$q + c_xc;
+        bx_far_r$d = border$q + c_xc + c_depth;
+        b_near_r$d = border$q - c_depth;
+        by_at_r$d = border$q + c_n_beam;
+        by_far_r$d = border$q + c_n_beam + c_depth;
         div$clock = clock;
         div$n_s = d_n_s;
         div$n_beam = d_n_beam;
@@ -1659,29 +1933,28 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dyn_ = 1'b0;
         end
         face_c = 'h0;
-        depth = z1 - n_s;
-        bx = border$q + xc;
-        by = border$q + n_beam;
-        if ((xc == nx_last$q) & dx_pos) begin
+        bx = bx_at_r$q;
+        by = by_at_r$q;
+        if (x_last_r$q & dx_pos) begin
             face_c = 'h2;
-            bx = border$q + xc + depth;
+            bx = bx_far_r$q;
         end
-        else if ((xc == 'h0) & dx_neg_nz) begin
+        else if (x_first_r$q & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border$q - depth;
+            bx = b_near_r$q;
         end
-        else if ((n_beam == ny_last$q) & dy_pos) begin
+        else if (y_last_r$q & dy_pos) begin
             face_c = 'h4;
-            by = border$q + n_beam + depth;
+            by = by_far_r$q;
         end
-        else if ((n_beam == 'h0) & dy_neg_nz) begin
+        else if (y_first_r$q & dy_neg_nz) begin
             face_c = 'h5;
-            by = border$q - depth;
+            by = b_near_r$q;
         end
-        if (n_s == z1) begin
+        if (s_last_r$q) begin
             face_c = 'h1;
-            bx = border$q + xc;
-            by = border$q + n_beam;
+            bx = bx_at_r$q;
+            by = by_at_r$q;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -1697,7 +1970,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
+        edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -1855,7 +2128,7 @@ module top$cfb$lanes$0$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$addr_q2
-module top$cfb$lanes$0$border(d,q,clock);
+module top$cfb$lanes$0$b_near_r(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1871,7 +2144,75 @@ module top$cfb$lanes$0$border(d,q,clock);
        q <= d;
     end
           
+endmodule // top$cfb$lanes$0$b_near_r
+module top$cfb$lanes$0$b_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$b_u
+module top$cfb$lanes$0$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$cfb$lanes$0$border
+module top$cfb$lanes$0$bx_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$bx_at_r
+module top$cfb$lanes$0$bx_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$bx_far_r
 module top$cfb$lanes$0$bx_q(d,q,clock);
     
     // Module arguments
@@ -1889,6 +2230,40 @@ module top$cfb$lanes$0$bx_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$bx_q
+module top$cfb$lanes$0$by_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$by_at_r
+module top$cfb$lanes$0$by_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$by_far_r
 module top$cfb$lanes$0$by_q(d,q,clock);
     
     // Module arguments
@@ -2169,6 +2544,23 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
        end
     end
 endmodule // top$cfb$lanes$0$memory
+module top$cfb$lanes$0$nx(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$nx
 module top$cfb$lanes$0$nx_last(d,q,clock);
     
     // Module arguments
@@ -2181,10 +2573,10 @@ module top$cfb$lanes$0$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$nx_last
 module top$cfb$lanes$0$ny_last(d,q,clock);
     
@@ -2198,10 +2590,10 @@ module top$cfb$lanes$0$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$ny_last
 module top$cfb$lanes$0$nz_last(d,q,clock);
     
@@ -2215,10 +2607,10 @@ module top$cfb$lanes$0$nz_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$nz_last
 module top$cfb$lanes$0$pad_q(d,q,clock);
     
@@ -2237,7 +2629,7 @@ module top$cfb$lanes$0$pad_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$pad_q
-module top$cfb$lanes$0$par_dx_pos(d,q,clock);
+module top$cfb$lanes$0$pad_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -2253,6 +2645,23 @@ module top$cfb$lanes$0$par_dx_pos(d,q,clock);
        q <= d;
     end
           
+endmodule // top$cfb$lanes$0$pad_r
+module top$cfb$lanes$0$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$cfb$lanes$0$par_dx_pos
 module top$cfb$lanes$0$par_dxm(d,q,clock);
     
@@ -2266,10 +2675,10 @@ module top$cfb$lanes$0$par_dxm(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$par_dxm
 module top$cfb$lanes$0$par_dxn(d,q,clock);
     
@@ -2283,10 +2692,10 @@ module top$cfb$lanes$0$par_dxn(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$par_dxn
 module top$cfb$lanes$0$par_dy_pos(d,q,clock);
     
@@ -2300,10 +2709,10 @@ module top$cfb$lanes$0$par_dy_pos(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$par_dy_pos
 module top$cfb$lanes$0$par_dym(d,q,clock);
     
@@ -2317,12 +2726,29 @@ module top$cfb$lanes$0$par_dym(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$0$par_dym
 module top$cfb$lanes$0$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$par_dyn
+module top$cfb$lanes$0$s_last_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -2338,7 +2764,41 @@ module top$cfb$lanes$0$par_dyn(d,q,clock);
        q <= d;
     end
           
-endmodule // top$cfb$lanes$0$par_dyn
+endmodule // top$cfb$lanes$0$s_last_r
+module top$cfb$lanes$0$slab_hi(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$slab_hi
+module top$cfb$lanes$0$slab_lo(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$slab_lo
 module top$cfb$lanes$0$sr_q(d,q,clock);
     
     // Module arguments
@@ -2356,6 +2816,40 @@ module top$cfb$lanes$0$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$sr_q
+module top$cfb$lanes$0$x_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$x_first_r
+module top$cfb$lanes$0$x_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$x_last_r
 module top$cfb$lanes$0$x_q(d,q,clock);
     
     // Module arguments
@@ -2373,6 +2867,57 @@ module top$cfb$lanes$0$x_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$x_q
+module top$cfb$lanes$0$xc_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$xc_r
+module top$cfb$lanes$0$y_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$y_first_r
+module top$cfb$lanes$0$y_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$y_last_r
 module top$cfb$lanes$0$y_q(d,q,clock);
     
     // Module arguments
@@ -2407,7 +2952,7 @@ module top$cfb$lanes$0$z_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$z_q
-module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,c_n_s,c_n_beam,c_n_b,n_s,n_beam,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -2426,9 +2971,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
+    input wire  [15:0] c_n_s;
+    input wire  [15:0] c_n_beam;
+    input wire  [15:0] c_n_b;
     input wire  [15:0] n_s;
     input wire  [15:0] n_beam;
-    input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
     input wire  [15:0] load_address;
@@ -2469,6 +3016,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx$d;
+    wire  [15:0] nx$q;
+    reg  nx$clock;
     reg  [15:0] nx_last$d;
     wire  [15:0] nx_last$q;
     reg  nx_last$clock;
@@ -2481,6 +3031,15 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] border$d;
     wire  [15:0] border$q;
     reg  border$clock;
+    reg  [15:0] b_u$d;
+    wire  [15:0] b_u$q;
+    reg  b_u$clock;
+    reg  [15:0] slab_lo$d;
+    wire  [15:0] slab_lo$q;
+    reg  slab_lo$clock;
+    reg  [15:0] slab_hi$d;
+    wire  [15:0] slab_hi$q;
+    reg  slab_hi$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -2529,6 +3088,12 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  halo_q$d;
     wire  halo_q$q;
     reg  halo_q$clock;
+    reg  [15:0] xc_r$d;
+    wire  [15:0] xc_r$q;
+    reg  xc_r$clock;
+    reg  pad_r$d;
+    wire  pad_r$q;
+    reg  pad_r$clock;
     reg  [15:0] a_u$d;
     wire  [15:0] a_u$q;
     reg  a_u$clock;
@@ -2559,6 +3124,36 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr$d;
     wire  [31:0] addr$q;
     reg  addr$clock;
+    reg  x_last_r$d;
+    wire  x_last_r$q;
+    reg  x_last_r$clock;
+    reg  x_first_r$d;
+    wire  x_first_r$q;
+    reg  x_first_r$clock;
+    reg  y_last_r$d;
+    wire  y_last_r$q;
+    reg  y_last_r$clock;
+    reg  y_first_r$d;
+    wire  y_first_r$q;
+    reg  y_first_r$clock;
+    reg  s_last_r$d;
+    wire  s_last_r$q;
+    reg  s_last_r$clock;
+    reg  [15:0] bx_at_r$d;
+    wire  [15:0] bx_at_r$q;
+    reg  bx_at_r$clock;
+    reg  [15:0] bx_far_r$d;
+    wire  [15:0] bx_far_r$q;
+    reg  bx_far_r$clock;
+    reg  [15:0] b_near_r$d;
+    wire  [15:0] b_near_r$q;
+    reg  b_near_r$clock;
+    reg  [15:0] by_at_r$d;
+    wire  [15:0] by_at_r$q;
+    reg  by_at_r$clock;
+    reg  [15:0] by_far_r$d;
+    wire  [15:0] by_far_r$q;
+    reg  by_far_r$clock;
     reg  [15:0] x_q$d;
     wire  [15:0] x_q$q;
     reg  x_q$clock;
@@ -2597,15 +3192,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  by_q$clock;
     
     // Local signals
-    reg  [15:0] nx;
     reg  [15:0] z0;
     reg  [15:0] z1;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [15:0] b_u;
-    reg  [15:0] slab_lo;
-    reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
     reg  dxn;
@@ -2617,11 +3208,12 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  dx_neg_nz;
     reg  dy_pos;
     reg  dy_neg_nz;
+    reg  [15:0] c_xc;
     reg  [15:0] xc;
     reg  [15:0] a_xc;
     reg  is_pad;
     reg  [2:0] face_c;
-    reg  [15:0] depth;
+    reg  [15:0] c_depth;
     reg  [15:0] bx;
     reg  [15:0] by;
     
@@ -2634,6 +3226,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$1$nx nx(
+        .d(nx$d),
+        .q(nx$q),
+        .clock(nx$clock)
     );
     top$cfb$lanes$1$nx_last nx_last(
         .d(nx_last$d),
@@ -2654,6 +3251,21 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(border$d),
         .q(border$q),
         .clock(border$clock)
+    );
+    top$cfb$lanes$1$b_u b_u(
+        .d(b_u$d),
+        .q(b_u$q),
+        .clock(b_u$clock)
+    );
+    top$cfb$lanes$1$slab_lo slab_lo(
+        .d(slab_lo$d),
+        .q(slab_lo$q),
+        .clock(slab_lo$clock)
+    );
+    top$cfb$lanes$1$slab_hi slab_hi(
+        .d(slab_hi$d),
+        .q(slab_hi$q),
+        .clock(slab_hi$clock)
     );
     top$cfb$lanes$1$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -2715,6 +3327,16 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(halo_q$q),
         .clock(halo_q$clock)
     );
+    top$cfb$lanes$1$xc_r xc_r(
+        .d(xc_r$d),
+        .q(xc_r$q),
+        .clock(xc_r$clock)
+    );
+    top$cfb$lanes$1$pad_r pad_r(
+        .d(pad_r$d),
+        .q(pad_r$q),
+        .clock(pad_r$clock)
+    );
     top$cfb$lanes$1$a_u a_u(
         .d(a_u$d),
         .q(a_u$q),
@@ -2764,6 +3386,56 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(addr$d),
         .q(addr$q),
         .clock(addr$clock)
+    );
+    top$cfb$lanes$1$x_last_r x_last_r(
+        .d(x_last_r$d),
+        .q(x_last_r$q),
+        .clock(x_last_r$clock)
+    );
+    top$cfb$lanes$1$x_first_r x_first_r(
+        .d(x_first_r$d),
+        .q(x_first_r$q),
+        .clock(x_first_r$clock)
+    );
+    top$cfb$lanes$1$y_last_r y_last_r(
+        .d(y_last_r$d),
+        .q(y_last_r$q),
+        .clock(y_last_r$clock)
+    );
+    top$cfb$lanes$1$y_first_r y_first_r(
+        .d(y_first_r$d),
+        .q(y_first_r$q),
+        .clock(y_first_r$clock)
+    );
+    top$cfb$lanes$1$s_last_r s_last_r(
+        .d(s_last_r$d),
+        .q(s_last_r$q),
+        .clock(s_last_r$clock)
+    );
+    top$cfb$lanes$1$bx_at_r bx_at_r(
+        .d(bx_at_r$d),
+        .q(bx_at_r$q),
+        .clock(bx_at_r$clock)
+    );
+    top$cfb$lanes$1$bx_far_r bx_far_r(
+        .d(bx_far_r$d),
+        .q(bx_far_r$q),
+        .clock(bx_far_r$clock)
+    );
+    top$cfb$lanes$1$b_near_r b_near_r(
+        .d(b_near_r$d),
+        .q(b_near_r$q),
+        .clock(b_near_r$clock)
+    );
+    top$cfb$lanes$1$by_at_r by_at_r(
+        .d(by_at_r$d),
+        .q(by_at_r$q),
+        .clock(by_at_r$clock)
+    );
+    top$cfb$lanes$1$by_far_r by_far_r(
+        .d(by_far_r$d),
+        .q(by_far_r$q),
+        .clock(by_far_r$clock)
     );
     top$cfb$lanes$1$x_q x_q(
         .d(x_q$d),
@@ -2857,6 +3529,22 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        xc_r$clock = clock;
+        pad_r$clock = clock;
+        x_last_r$clock = clock;
+        x_first_r$clock = clock;
+        y_last_r$clock = clock;
+        y_first_r$clock = clock;
+        s_last_r$clock = clock;
+        bx_at_r$clock = clock;
+        bx_far_r$clock = clock;
+        b_near_r$clock = clock;
+        by_at_r$clock = clock;
+        by_far_r$clock = clock;
+        nx$clock = clock;
+        b_u$clock = clock;
+        slab_lo$clock = clock;
+        slab_hi$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -2895,6 +3583,22 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        xc_r$d = xc_r$q;
+        pad_r$d = pad_r$q;
+        x_last_r$d = x_last_r$q;
+        x_first_r$d = x_first_r$q;
+        y_last_r$d = y_last_r$q;
+        y_first_r$d = y_first_r$q;
+        s_last_r$d = s_last_r$q;
+        bx_at_r$d = bx_at_r$q;
+        bx_far_r$d = bx_far_r$q;
+        b_near_r$d = b_near_r$q;
+        by_at_r$d = by_at_r$q;
+        by_far_r$d = by_far_r$q;
+        nx$d = nx$q;
+        b_u$d = b_u$q;
+        slab_lo$d = slab_lo$q;
+        slab_hi$d = slab_hi$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -2905,7 +3609,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
-        nx = dims[('h0)+:(16)];
+        nx$d = dims[('h0)+:(16)];
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         nz_last$d = dims[('h20)+:(16)] - 'h1;
@@ -2915,9 +3619,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
-        b_u = address_reg[('h0)+:(16)];
-        slab_lo = address_reg[('h10)+:(16)];
-        slab_hi = address_reg[('h20)+:(16)];
+        b_u$d = address_reg[('h0)+:(16)];
+        slab_lo$d = address_reg[('h10)+:(16)];
+        slab_hi$d = address_reg[('h20)+:(16)];
         dx_abs = dx;
         if (dx['h3f]) begin
             dx_abs = 'h0 - dx;
@@ -2938,7 +3642,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         memory$write_address = load_address;
         memory$write_data = load_data;
         a_xc = (a_n_b << p_shift) | ((lane - a_n_beam - a_n_s) & p_mask);
-        a_pad$d = a_xc >= nx;
+        a_pad$d = a_xc >= nx$q;
         a_u$d = a_xc;
         if (u_from == 'h1) begin
             a_u$d = a_n_beam;
@@ -2961,9 +3665,9 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u;
-        m_w_lo$d = a_w$q * slab_lo;
-        m_w_hi$d = a_w$q * slab_hi;
+        m_v$d = a_v$q * b_u$q;
+        m_w_lo$d = a_w$q * slab_lo$q;
+        m_w_hi$d = a_w$q * slab_hi$q;
         m_pad$d = a_pad$q;
         addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
         if (m_pad$q) begin
@@ -2971,8 +3675,22 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         memory$read_address = 16'(addr$q);
         ext_addr = addr$q;
-        xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
-        is_pad = xc >= nx;
+        c_xc = (c_n_b << p_shift) | ((lane - c_n_beam - c_n_s) & p_mask);
+        xc_r$d = c_xc;
+        pad_r$d = c_xc >= nx$q;
+        xc = xc_r$q;
+        is_pad = pad_r$q;
+        c_depth = z1 - c_n_s;
+        x_last_r$d = c_xc == nx_last$q;
+        x_first_r$d = c_xc == 'h0;
+        y_last_r$d = c_n_beam == ny_last$q;
+        y_first_r$d = c_n_beam == 'h0;
+        s_last_r$d = c_n_s == z1;
+        bx_at_r$d = border$q + c_xc;
+        bx_far_r$d = border$q + c_xc + c_depth;
+        b_near_r$d = border$q - c_depth;
+        by_at_r$d = border$q + c_n_beam;
+        by_far_r$d = border$q + c_n_beam + c_depth;
         div$clock = clock;
         div$n_s = d_n_s;
         div$n_beam = d_n_beam;
@@ -3007,29 +3725,28 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dyn_ = 1'b0;
         end
         face_c = 'h0;
-        depth = z1 - n_s;
-        bx = border$q + xc;
-        by = border$q + n_beam;
-        if ((xc == nx_last$q) & dx_pos) begin
+        bx = bx_at_r$q;
+        by = by_at_r$q;
+        if (x_last_r$q & dx_pos) begin
             face_c = 'h2;
-            bx = border$q + xc + depth;
+            bx = bx_far_r$q;
         end
-        else if ((xc == 'h0) & dx_neg_nz) begin
+        else if (x_first_r$q & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border$q - depth;
+            bx = b_near_r$q;
         end
-        else if ((n_beam == ny_last$q) & dy_pos) begin
+        else if (y_last_r$q & dy_pos) begin
             face_c = 'h4;
-            by = border$q + n_beam + depth;
+            by = by_far_r$q;
         end
-        else if ((n_beam == 'h0) & dy_neg_nz) begin
+        else if (y_first_r$q & dy_neg_nz) begin
             face_c = 'h5;
-            by = border$q - depth;
+            by = b_near_r$q;
         end
-        if (n_s == z1) begin
+        if (s_last_r$q) begin
             face_c = 'h1;
-            bx = border$q + xc;
-            by = border$q + n_beam;
+            bx = bx_at_r$q;
+            by = by_at_r$q;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -3045,7 +3762,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
+        edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -3203,7 +3920,7 @@ module top$cfb$lanes$1$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$addr_q2
-module top$cfb$lanes$1$border(d,q,clock);
+module top$cfb$lanes$1$b_near_r(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -3219,7 +3936,75 @@ module top$cfb$lanes$1$border(d,q,clock);
        q <= d;
     end
           
+endmodule // top$cfb$lanes$1$b_near_r
+module top$cfb$lanes$1$b_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$b_u
+module top$cfb$lanes$1$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$cfb$lanes$1$border
+module top$cfb$lanes$1$bx_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$bx_at_r
+module top$cfb$lanes$1$bx_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$bx_far_r
 module top$cfb$lanes$1$bx_q(d,q,clock);
     
     // Module arguments
@@ -3237,6 +4022,40 @@ module top$cfb$lanes$1$bx_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$bx_q
+module top$cfb$lanes$1$by_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$by_at_r
+module top$cfb$lanes$1$by_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$by_far_r
 module top$cfb$lanes$1$by_q(d,q,clock);
     
     // Module arguments
@@ -3517,6 +4336,23 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
        end
     end
 endmodule // top$cfb$lanes$1$memory
+module top$cfb$lanes$1$nx(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$nx
 module top$cfb$lanes$1$nx_last(d,q,clock);
     
     // Module arguments
@@ -3529,10 +4365,10 @@ module top$cfb$lanes$1$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$nx_last
 module top$cfb$lanes$1$ny_last(d,q,clock);
     
@@ -3546,10 +4382,10 @@ module top$cfb$lanes$1$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$ny_last
 module top$cfb$lanes$1$nz_last(d,q,clock);
     
@@ -3563,10 +4399,10 @@ module top$cfb$lanes$1$nz_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$nz_last
 module top$cfb$lanes$1$pad_q(d,q,clock);
     
@@ -3585,7 +4421,7 @@ module top$cfb$lanes$1$pad_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$pad_q
-module top$cfb$lanes$1$par_dx_pos(d,q,clock);
+module top$cfb$lanes$1$pad_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3601,6 +4437,23 @@ module top$cfb$lanes$1$par_dx_pos(d,q,clock);
        q <= d;
     end
           
+endmodule // top$cfb$lanes$1$pad_r
+module top$cfb$lanes$1$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$cfb$lanes$1$par_dx_pos
 module top$cfb$lanes$1$par_dxm(d,q,clock);
     
@@ -3614,10 +4467,10 @@ module top$cfb$lanes$1$par_dxm(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$par_dxm
 module top$cfb$lanes$1$par_dxn(d,q,clock);
     
@@ -3631,10 +4484,10 @@ module top$cfb$lanes$1$par_dxn(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$par_dxn
 module top$cfb$lanes$1$par_dy_pos(d,q,clock);
     
@@ -3648,10 +4501,10 @@ module top$cfb$lanes$1$par_dy_pos(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$par_dy_pos
 module top$cfb$lanes$1$par_dym(d,q,clock);
     
@@ -3665,12 +4518,29 @@ module top$cfb$lanes$1$par_dym(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$1$par_dym
 module top$cfb$lanes$1$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$par_dyn
+module top$cfb$lanes$1$s_last_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3686,7 +4556,41 @@ module top$cfb$lanes$1$par_dyn(d,q,clock);
        q <= d;
     end
           
-endmodule // top$cfb$lanes$1$par_dyn
+endmodule // top$cfb$lanes$1$s_last_r
+module top$cfb$lanes$1$slab_hi(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$slab_hi
+module top$cfb$lanes$1$slab_lo(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$slab_lo
 module top$cfb$lanes$1$sr_q(d,q,clock);
     
     // Module arguments
@@ -3704,6 +4608,40 @@ module top$cfb$lanes$1$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$sr_q
+module top$cfb$lanes$1$x_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$x_first_r
+module top$cfb$lanes$1$x_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$x_last_r
 module top$cfb$lanes$1$x_q(d,q,clock);
     
     // Module arguments
@@ -3721,6 +4659,57 @@ module top$cfb$lanes$1$x_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$x_q
+module top$cfb$lanes$1$xc_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$xc_r
+module top$cfb$lanes$1$y_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$y_first_r
+module top$cfb$lanes$1$y_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$y_last_r
 module top$cfb$lanes$1$y_q(d,q,clock);
     
     // Module arguments
@@ -3755,7 +4744,7 @@ module top$cfb$lanes$1$z_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$z_q
-module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,c_n_s,c_n_beam,c_n_b,n_s,n_beam,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -3774,9 +4763,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
+    input wire  [15:0] c_n_s;
+    input wire  [15:0] c_n_beam;
+    input wire  [15:0] c_n_b;
     input wire  [15:0] n_s;
     input wire  [15:0] n_beam;
-    input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
     input wire  [15:0] load_address;
@@ -3817,6 +4808,9 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx$d;
+    wire  [15:0] nx$q;
+    reg  nx$clock;
     reg  [15:0] nx_last$d;
     wire  [15:0] nx_last$q;
     reg  nx_last$clock;
@@ -3829,6 +4823,15 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] border$d;
     wire  [15:0] border$q;
     reg  border$clock;
+    reg  [15:0] b_u$d;
+    wire  [15:0] b_u$q;
+    reg  b_u$clock;
+    reg  [15:0] slab_lo$d;
+    wire  [15:0] slab_lo$q;
+    reg  slab_lo$clock;
+    reg  [15:0] slab_hi$d;
+    wire  [15:0] slab_hi$q;
+    reg  slab_hi$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -3877,6 +4880,12 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  halo_q$d;
     wire  halo_q$q;
     reg  halo_q$clock;
+    reg  [15:0] xc_r$d;
+    wire  [15:0] xc_r$q;
+    reg  xc_r$clock;
+    reg  pad_r$d;
+    wire  pad_r$q;
+    reg  pad_r$clock;
     reg  [15:0] a_u$d;
     wire  [15:0] a_u$q;
     reg  a_u$clock;
@@ -3907,6 +4916,36 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr$d;
     wire  [31:0] addr$q;
     reg  addr$clock;
+    reg  x_last_r$d;
+    wire  x_last_r$q;
+    reg  x_last_r$clock;
+    reg  x_first_r$d;
+    wire  x_first_r$q;
+    reg  x_first_r$clock;
+    reg  y_last_r$d;
+    wire  y_last_r$q;
+    reg  y_last_r$clock;
+    reg  y_first_r$d;
+    wire  y_first_r$q;
+    reg  y_first_r$clock;
+    reg  s_last_r$d;
+    wire  s_last_r$q;
+    reg  s_last_r$clock;
+    reg  [15:0] bx_at_r$d;
+    wire  [15:0] bx_at_r$q;
+    reg  bx_at_r$clock;
+    reg  [15:0] bx_far_r$d;
+    wire  [15:0] bx_far_r$q;
+    reg  bx_far_r$clock;
+    reg  [15:0] b_near_r$d;
+    wire  [15:0] b_near_r$q;
+    reg  b_near_r$clock;
+    reg  [15:0] by_at_r$d;
+    wire  [15:0] by_at_r$q;
+    reg  by_at_r$clock;
+    reg  [15:0] by_far_r$d;
+    wire  [15:0] by_far_r$q;
+    reg  by_far_r$clock;
     reg  [15:0] x_q$d;
     wire  [15:0] x_q$q;
     reg  x_q$clock;
@@ -3945,15 +4984,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  by_q$clock;
     
     // Local signals
-    reg  [15:0] nx;
     reg  [15:0] z0;
     reg  [15:0] z1;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [15:0] b_u;
-    reg  [15:0] slab_lo;
-    reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
     reg  dxn;
@@ -3965,11 +5000,12 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  dx_neg_nz;
     reg  dy_pos;
     reg  dy_neg_nz;
+    reg  [15:0] c_xc;
     reg  [15:0] xc;
     reg  [15:0] a_xc;
     reg  is_pad;
     reg  [2:0] face_c;
-    reg  [15:0] depth;
+    reg  [15:0] c_depth;
     reg  [15:0] bx;
     reg  [15:0] by;
     
@@ -3982,6 +5018,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$2$nx nx(
+        .d(nx$d),
+        .q(nx$q),
+        .clock(nx$clock)
     );
     top$cfb$lanes$2$nx_last nx_last(
         .d(nx_last$d),
@@ -4002,6 +5043,21 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(border$d),
         .q(border$q),
         .clock(border$clock)
+    );
+    top$cfb$lanes$2$b_u b_u(
+        .d(b_u$d),
+        .q(b_u$q),
+        .clock(b_u$clock)
+    );
+    top$cfb$lanes$2$slab_lo slab_lo(
+        .d(slab_lo$d),
+        .q(slab_lo$q),
+        .clock(slab_lo$clock)
+    );
+    top$cfb$lanes$2$slab_hi slab_hi(
+        .d(slab_hi$d),
+        .q(slab_hi$q),
+        .clock(slab_hi$clock)
     );
     top$cfb$lanes$2$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -4063,6 +5119,16 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(halo_q$q),
         .clock(halo_q$clock)
     );
+    top$cfb$lanes$2$xc_r xc_r(
+        .d(xc_r$d),
+        .q(xc_r$q),
+        .clock(xc_r$clock)
+    );
+    top$cfb$lanes$2$pad_r pad_r(
+        .d(pad_r$d),
+        .q(pad_r$q),
+        .clock(pad_r$clock)
+    );
     top$cfb$lanes$2$a_u a_u(
         .d(a_u$d),
         .q(a_u$q),
@@ -4112,6 +5178,56 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(addr$d),
         .q(addr$q),
         .clock(addr$clock)
+    );
+    top$cfb$lanes$2$x_last_r x_last_r(
+        .d(x_last_r$d),
+        .q(x_last_r$q),
+        .clock(x_last_r$clock)
+    );
+    top$cfb$lanes$2$x_first_r x_first_r(
+        .d(x_first_r$d),
+        .q(x_first_r$q),
+        .clock(x_first_r$clock)
+    );
+    top$cfb$lanes$2$y_last_r y_last_r(
+        .d(y_last_r$d),
+        .q(y_last_r$q),
+        .clock(y_last_r$clock)
+    );
+    top$cfb$lanes$2$y_first_r y_first_r(
+        .d(y_first_r$d),
+        .q(y_first_r$q),
+        .clock(y_first_r$clock)
+    );
+    top$cfb$lanes$2$s_last_r s_last_r(
+        .d(s_last_r$d),
+        .q(s_last_r$q),
+        .clock(s_last_r$clock)
+    );
+    top$cfb$lanes$2$bx_at_r bx_at_r(
+        .d(bx_at_r$d),
+        .q(bx_at_r$q),
+        .clock(bx_at_r$clock)
+    );
+    top$cfb$lanes$2$bx_far_r bx_far_r(
+        .d(bx_far_r$d),
+        .q(bx_far_r$q),
+        .clock(bx_far_r$clock)
+    );
+    top$cfb$lanes$2$b_near_r b_near_r(
+        .d(b_near_r$d),
+        .q(b_near_r$q),
+        .clock(b_near_r$clock)
+    );
+    top$cfb$lanes$2$by_at_r by_at_r(
+        .d(by_at_r$d),
+        .q(by_at_r$q),
+        .clock(by_at_r$clock)
+    );
+    top$cfb$lanes$2$by_far_r by_far_r(
+        .d(by_far_r$d),
+        .q(by_far_r$q),
+        .clock(by_far_r$clock)
     );
     top$cfb$lanes$2$x_q x_q(
         .d(x_q$d),
@@ -4205,6 +5321,22 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        xc_r$clock = clock;
+        pad_r$clock = clock;
+        x_last_r$clock = clock;
+        x_first_r$clock = clock;
+        y_last_r$clock = clock;
+        y_first_r$clock = clock;
+        s_last_r$clock = clock;
+        bx_at_r$clock = clock;
+        bx_far_r$clock = clock;
+        b_near_r$clock = clock;
+        by_at_r$clock = clock;
+        by_far_r$clock = clock;
+        nx$clock = clock;
+        b_u$clock = clock;
+        slab_lo$clock = clock;
+        slab_hi$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -4243,6 +5375,22 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        xc_r$d = xc_r$q;
+        pad_r$d = pad_r$q;
+        x_last_r$d = x_last_r$q;
+        x_first_r$d = x_first_r$q;
+        y_last_r$d = y_last_r$q;
+        y_first_r$d = y_first_r$q;
+        s_last_r$d = s_last_r$q;
+        bx_at_r$d = bx_at_r$q;
+        bx_far_r$d = bx_far_r$q;
+        b_near_r$d = b_near_r$q;
+        by_at_r$d = by_at_r$q;
+        by_far_r$d = by_far_r$q;
+        nx$d = nx$q;
+        b_u$d = b_u$q;
+        slab_lo$d = slab_lo$q;
+        slab_hi$d = slab_hi$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -4253,7 +5401,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
-        nx = dims[('h0)+:(16)];
+        nx$d = dims[('h0)+:(16)];
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         nz_last$d = dims[('h20)+:(16)] - 'h1;
@@ -4263,9 +5411,9 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
-        b_u = address_reg[('h0)+:(16)];
-        slab_lo = address_reg[('h10)+:(16)];
-        slab_hi = address_reg[('h20)+:(16)];
+        b_u$d = address_reg[('h0)+:(16)];
+        slab_lo$d = address_reg[('h10)+:(16)];
+        slab_hi$d = address_reg[('h20)+:(16)];
         dx_abs = dx;
         if (dx['h3f]) begin
             dx_abs = 'h0 - dx;
@@ -4286,7 +5434,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         memory$write_address = load_address;
         memory$write_data = load_data;
         a_xc = (a_n_b << p_shift) | ((lane - a_n_beam - a_n_s) & p_mask);
-        a_pad$d = a_xc >= nx;
+        a_pad$d = a_xc >= nx$q;
         a_u$d = a_xc;
         if (u_from == 'h1) begin
             a_u$d = a_n_beam;
@@ -4309,9 +5457,9 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u;
-        m_w_lo$d = a_w$q * slab_lo;
-        m_w_hi$d = a_w$q * slab_hi;
+        m_v$d = a_v$q * b_u$q;
+        m_w_lo$d = a_w$q * slab_lo$q;
+        m_w_hi$d = a_w$q * slab_hi$q;
         m_pad$d = a_pad$q;
         addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
         if (m_pad$q) begin
@@ -4319,8 +5467,22 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         memory$read_address = 16'(addr$q);
         ext_addr = addr$q;
-        xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
-        is_pad = xc >= nx;
+        c_xc = (c_n_b << p_shift) | ((lane - c_n_beam - c_n_s) & p_mask);
+        xc_r$d = c_xc;
+        pad_r$d = c_xc >= nx$q;
+        xc = xc_r$q;
+        is_pad = pad_r$q;
+        c_depth = z1 - c_n_s;
+        x_last_r$d = c_xc == nx_last$q;
+        x_first_r$d = c_xc == 'h0;
+        y_last_r$d = c_n_beam == ny_last$q;
+        y_first_r$d = c_n_beam == 'h0;
+        s_last_r$d = c_n_s == z1;
+        bx_at_r$d = border$q + c_xc;
+        bx_far_r$d = border$q + c_xc + c_depth;
+        b_near_r$d = border$q - c_depth;
+        by_at_r$d = border$q + c_n_beam;
+        by_far_r$d = border$q + c_n_beam + c_depth;
         div$clock = clock;
         div$n_s = d_n_s;
         div$n_beam = d_n_beam;
@@ -4355,29 +5517,28 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dyn_ = 1'b0;
         end
         face_c = 'h0;
-        depth = z1 - n_s;
-        bx = border$q + xc;
-        by = border$q + n_beam;
-        if ((xc == nx_last$q) & dx_pos) begin
+        bx = bx_at_r$q;
+        by = by_at_r$q;
+        if (x_last_r$q & dx_pos) begin
             face_c = 'h2;
-            bx = border$q + xc + depth;
+            bx = bx_far_r$q;
         end
-        else if ((xc == 'h0) & dx_neg_nz) begin
+        else if (x_first_r$q & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border$q - depth;
+            bx = b_near_r$q;
         end
-        else if ((n_beam == ny_last$q) & dy_pos) begin
+        else if (y_last_r$q & dy_pos) begin
             face_c = 'h4;
-            by = border$q + n_beam + depth;
+            by = by_far_r$q;
         end
-        else if ((n_beam == 'h0) & dy_neg_nz) begin
+        else if (y_first_r$q & dy_neg_nz) begin
             face_c = 'h5;
-            by = border$q - depth;
+            by = b_near_r$q;
         end
-        if (n_s == z1) begin
+        if (s_last_r$q) begin
             face_c = 'h1;
-            bx = border$q + xc;
-            by = border$q + n_beam;
+            bx = bx_at_r$q;
+            by = by_at_r$q;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -4393,7 +5554,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
+        edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -4551,7 +5712,7 @@ module top$cfb$lanes$2$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$addr_q2
-module top$cfb$lanes$2$border(d,q,clock);
+module top$cfb$lanes$2$b_near_r(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4567,7 +5728,75 @@ module top$cfb$lanes$2$border(d,q,clock);
        q <= d;
     end
           
+endmodule // top$cfb$lanes$2$b_near_r
+module top$cfb$lanes$2$b_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$b_u
+module top$cfb$lanes$2$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$cfb$lanes$2$border
+module top$cfb$lanes$2$bx_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$bx_at_r
+module top$cfb$lanes$2$bx_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$bx_far_r
 module top$cfb$lanes$2$bx_q(d,q,clock);
     
     // Module arguments
@@ -4585,6 +5814,40 @@ module top$cfb$lanes$2$bx_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$bx_q
+module top$cfb$lanes$2$by_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$by_at_r
+module top$cfb$lanes$2$by_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$by_far_r
 module top$cfb$lanes$2$by_q(d,q,clock);
     
     // Module arguments
@@ -4865,6 +6128,23 @@ module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,wr
        end
     end
 endmodule // top$cfb$lanes$2$memory
+module top$cfb$lanes$2$nx(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$nx
 module top$cfb$lanes$2$nx_last(d,q,clock);
     
     // Module arguments
@@ -4877,10 +6157,10 @@ module top$cfb$lanes$2$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$2$nx_last
 module top$cfb$lanes$2$ny_last(d,q,clock);
     
@@ -4894,10 +6174,10 @@ module top$cfb$lanes$2$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$2$ny_last
 module top$cfb$lanes$2$nz_last(d,q,clock);
     
@@ -4911,10 +6191,10 @@ module top$cfb$lanes$2$nz_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$2$nz_last
 module top$cfb$lanes$2$pad_q(d,q,clock);
     
@@ -4933,7 +6213,7 @@ module top$cfb$lanes$2$pad_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$pad_q
-module top$cfb$lanes$2$par_dx_pos(d,q,clock);
+module top$cfb$lanes$2$pad_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4949,6 +6229,23 @@ module top$cfb$lanes$2$par_dx_pos(d,q,clock);
        q <= d;
     end
           
+endmodule // top$cfb$lanes$2$pad_r
+module top$cfb$lanes$2$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$cfb$lanes$2$par_dx_pos
 module top$cfb$lanes$2$par_dxm(d,q,clock);
     
@@ -4962,10 +6259,10 @@ module top$cfb$lanes$2$par_dxm(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$2$par_dxm
 module top$cfb$lanes$2$par_dxn(d,q,clock);
     
@@ -4979,10 +6276,10 @@ module top$cfb$lanes$2$par_dxn(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$2$par_dxn
 module top$cfb$lanes$2$par_dy_pos(d,q,clock);
     
@@ -4996,10 +6293,10 @@ module top$cfb$lanes$2$par_dy_pos(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$2$par_dy_pos
 module top$cfb$lanes$2$par_dym(d,q,clock);
     
@@ -5013,12 +6310,29 @@ module top$cfb$lanes$2$par_dym(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$2$par_dym
 module top$cfb$lanes$2$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$par_dyn
+module top$cfb$lanes$2$s_last_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -5034,7 +6348,41 @@ module top$cfb$lanes$2$par_dyn(d,q,clock);
        q <= d;
     end
           
-endmodule // top$cfb$lanes$2$par_dyn
+endmodule // top$cfb$lanes$2$s_last_r
+module top$cfb$lanes$2$slab_hi(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$slab_hi
+module top$cfb$lanes$2$slab_lo(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$slab_lo
 module top$cfb$lanes$2$sr_q(d,q,clock);
     
     // Module arguments
@@ -5052,6 +6400,40 @@ module top$cfb$lanes$2$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$sr_q
+module top$cfb$lanes$2$x_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$x_first_r
+module top$cfb$lanes$2$x_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$x_last_r
 module top$cfb$lanes$2$x_q(d,q,clock);
     
     // Module arguments
@@ -5069,6 +6451,57 @@ module top$cfb$lanes$2$x_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$x_q
+module top$cfb$lanes$2$xc_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$xc_r
+module top$cfb$lanes$2$y_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$y_first_r
+module top$cfb$lanes$2$y_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$y_last_r
 module top$cfb$lanes$2$y_q(d,q,clock);
     
     // Module arguments
@@ -5103,7 +6536,7 @@ module top$cfb$lanes$2$z_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$z_q
-module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,c_n_s,c_n_beam,c_n_b,n_s,n_beam,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -5122,9 +6555,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
+    input wire  [15:0] c_n_s;
+    input wire  [15:0] c_n_beam;
+    input wire  [15:0] c_n_b;
     input wire  [15:0] n_s;
     input wire  [15:0] n_beam;
-    input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
     input wire  [15:0] load_address;
@@ -5165,6 +6600,9 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx$d;
+    wire  [15:0] nx$q;
+    reg  nx$clock;
     reg  [15:0] nx_last$d;
     wire  [15:0] nx_last$q;
     reg  nx_last$clock;
@@ -5177,6 +6615,15 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [15:0] border$d;
     wire  [15:0] border$q;
     reg  border$clock;
+    reg  [15:0] b_u$d;
+    wire  [15:0] b_u$q;
+    reg  b_u$clock;
+    reg  [15:0] slab_lo$d;
+    wire  [15:0] slab_lo$q;
+    reg  slab_lo$clock;
+    reg  [15:0] slab_hi$d;
+    wire  [15:0] slab_hi$q;
+    reg  slab_hi$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -5225,6 +6672,12 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  halo_q$d;
     wire  halo_q$q;
     reg  halo_q$clock;
+    reg  [15:0] xc_r$d;
+    wire  [15:0] xc_r$q;
+    reg  xc_r$clock;
+    reg  pad_r$d;
+    wire  pad_r$q;
+    reg  pad_r$clock;
     reg  [15:0] a_u$d;
     wire  [15:0] a_u$q;
     reg  a_u$clock;
@@ -5255,6 +6708,36 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr$d;
     wire  [31:0] addr$q;
     reg  addr$clock;
+    reg  x_last_r$d;
+    wire  x_last_r$q;
+    reg  x_last_r$clock;
+    reg  x_first_r$d;
+    wire  x_first_r$q;
+    reg  x_first_r$clock;
+    reg  y_last_r$d;
+    wire  y_last_r$q;
+    reg  y_last_r$clock;
+    reg  y_first_r$d;
+    wire  y_first_r$q;
+    reg  y_first_r$clock;
+    reg  s_last_r$d;
+    wire  s_last_r$q;
+    reg  s_last_r$clock;
+    reg  [15:0] bx_at_r$d;
+    wire  [15:0] bx_at_r$q;
+    reg  bx_at_r$clock;
+    reg  [15:0] bx_far_r$d;
+    wire  [15:0] bx_far_r$q;
+    reg  bx_far_r$clock;
+    reg  [15:0] b_near_r$d;
+    wire  [15:0] b_near_r$q;
+    reg  b_near_r$clock;
+    reg  [15:0] by_at_r$d;
+    wire  [15:0] by_at_r$q;
+    reg  by_at_r$clock;
+    reg  [15:0] by_far_r$d;
+    wire  [15:0] by_far_r$q;
+    reg  by_far_r$clock;
     reg  [15:0] x_q$d;
     wire  [15:0] x_q$q;
     reg  x_q$clock;
@@ -5293,15 +6776,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  by_q$clock;
     
     // Local signals
-    reg  [15:0] nx;
     reg  [15:0] z0;
     reg  [15:0] z1;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [15:0] b_u;
-    reg  [15:0] slab_lo;
-    reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
     reg  dxn;
@@ -5313,11 +6792,12 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  dx_neg_nz;
     reg  dy_pos;
     reg  dy_neg_nz;
+    reg  [15:0] c_xc;
     reg  [15:0] xc;
     reg  [15:0] a_xc;
     reg  is_pad;
     reg  [2:0] face_c;
-    reg  [15:0] depth;
+    reg  [15:0] c_depth;
     reg  [15:0] bx;
     reg  [15:0] by;
     
@@ -5330,6 +6810,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$3$nx nx(
+        .d(nx$d),
+        .q(nx$q),
+        .clock(nx$clock)
     );
     top$cfb$lanes$3$nx_last nx_last(
         .d(nx_last$d),
@@ -5350,6 +6835,21 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(border$d),
         .q(border$q),
         .clock(border$clock)
+    );
+    top$cfb$lanes$3$b_u b_u(
+        .d(b_u$d),
+        .q(b_u$q),
+        .clock(b_u$clock)
+    );
+    top$cfb$lanes$3$slab_lo slab_lo(
+        .d(slab_lo$d),
+        .q(slab_lo$q),
+        .clock(slab_lo$clock)
+    );
+    top$cfb$lanes$3$slab_hi slab_hi(
+        .d(slab_hi$d),
+        .q(slab_hi$q),
+        .clock(slab_hi$clock)
     );
     top$cfb$lanes$3$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -5411,6 +6911,16 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(halo_q$q),
         .clock(halo_q$clock)
     );
+    top$cfb$lanes$3$xc_r xc_r(
+        .d(xc_r$d),
+        .q(xc_r$q),
+        .clock(xc_r$clock)
+    );
+    top$cfb$lanes$3$pad_r pad_r(
+        .d(pad_r$d),
+        .q(pad_r$q),
+        .clock(pad_r$clock)
+    );
     top$cfb$lanes$3$a_u a_u(
         .d(a_u$d),
         .q(a_u$q),
@@ -5460,6 +6970,56 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(addr$d),
         .q(addr$q),
         .clock(addr$clock)
+    );
+    top$cfb$lanes$3$x_last_r x_last_r(
+        .d(x_last_r$d),
+        .q(x_last_r$q),
+        .clock(x_last_r$clock)
+    );
+    top$cfb$lanes$3$x_first_r x_first_r(
+        .d(x_first_r$d),
+        .q(x_first_r$q),
+        .clock(x_first_r$clock)
+    );
+    top$cfb$lanes$3$y_last_r y_last_r(
+        .d(y_last_r$d),
+        .q(y_last_r$q),
+        .clock(y_last_r$clock)
+    );
+    top$cfb$lanes$3$y_first_r y_first_r(
+        .d(y_first_r$d),
+        .q(y_first_r$q),
+        .clock(y_first_r$clock)
+    );
+    top$cfb$lanes$3$s_last_r s_last_r(
+        .d(s_last_r$d),
+        .q(s_last_r$q),
+        .clock(s_last_r$clock)
+    );
+    top$cfb$lanes$3$bx_at_r bx_at_r(
+        .d(bx_at_r$d),
+        .q(bx_at_r$q),
+        .clock(bx_at_r$clock)
+    );
+    top$cfb$lanes$3$bx_far_r bx_far_r(
+        .d(bx_far_r$d),
+        .q(bx_far_r$q),
+        .clock(bx_far_r$clock)
+    );
+    top$cfb$lanes$3$b_near_r b_near_r(
+        .d(b_near_r$d),
+        .q(b_near_r$q),
+        .clock(b_near_r$clock)
+    );
+    top$cfb$lanes$3$by_at_r by_at_r(
+        .d(by_at_r$d),
+        .q(by_at_r$q),
+        .clock(by_at_r$clock)
+    );
+    top$cfb$lanes$3$by_far_r by_far_r(
+        .d(by_far_r$d),
+        .q(by_far_r$q),
+        .clock(by_far_r$clock)
     );
     top$cfb$lanes$3$x_q x_q(
         .d(x_q$d),
@@ -5553,6 +7113,22 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        xc_r$clock = clock;
+        pad_r$clock = clock;
+        x_last_r$clock = clock;
+        x_first_r$clock = clock;
+        y_last_r$clock = clock;
+        y_first_r$clock = clock;
+        s_last_r$clock = clock;
+        bx_at_r$clock = clock;
+        bx_far_r$clock = clock;
+        b_near_r$clock = clock;
+        by_at_r$clock = clock;
+        by_far_r$clock = clock;
+        nx$clock = clock;
+        b_u$clock = clock;
+        slab_lo$clock = clock;
+        slab_hi$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -5591,6 +7167,22 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        xc_r$d = xc_r$q;
+        pad_r$d = pad_r$q;
+        x_last_r$d = x_last_r$q;
+        x_first_r$d = x_first_r$q;
+        y_last_r$d = y_last_r$q;
+        y_first_r$d = y_first_r$q;
+        s_last_r$d = s_last_r$q;
+        bx_at_r$d = bx_at_r$q;
+        bx_far_r$d = bx_far_r$q;
+        b_near_r$d = b_near_r$q;
+        by_at_r$d = by_at_r$q;
+        by_far_r$d = by_far_r$q;
+        nx$d = nx$q;
+        b_u$d = b_u$q;
+        slab_lo$d = slab_lo$q;
+        slab_hi$d = slab_hi$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -5601,7 +7193,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
-        nx = dims[('h0)+:(16)];
+        nx$d = dims[('h0)+:(16)];
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         nz_last$d = dims[('h20)+:(16)] - 'h1;
@@ -5611,9 +7203,9 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
-        b_u = address_reg[('h0)+:(16)];
-        slab_lo = address_reg[('h10)+:(16)];
-        slab_hi = address_reg[('h20)+:(16)];
+        b_u$d = address_reg[('h0)+:(16)];
+        slab_lo$d = address_reg[('h10)+:(16)];
+        slab_hi$d = address_reg[('h20)+:(16)];
         dx_abs = dx;
         if (dx['h3f]) begin
             dx_abs = 'h0 - dx;
@@ -5634,7 +7226,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         memory$write_address = load_address;
         memory$write_data = load_data;
         a_xc = (a_n_b << p_shift) | ((lane - a_n_beam - a_n_s) & p_mask);
-        a_pad$d = a_xc >= nx;
+        a_pad$d = a_xc >= nx$q;
         a_u$d = a_xc;
         if (u_from == 'h1) begin
             a_u$d = a_n_beam;
@@ -5657,9 +7249,9 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u;
-        m_w_lo$d = a_w$q * slab_lo;
-        m_w_hi$d = a_w$q * slab_hi;
+        m_v$d = a_v$q * b_u$q;
+        m_w_lo$d = a_w$q * slab_lo$q;
+        m_w_hi$d = a_w$q * slab_hi$q;
         m_pad$d = a_pad$q;
         addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
         if (m_pad$q) begin
@@ -5667,8 +7259,22 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         end
         memory$read_address = 16'(addr$q);
         ext_addr = addr$q;
-        xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
-        is_pad = xc >= nx;
+        c_xc = (c_n_b << p_shift) | ((lane - c_n_beam - c_n_s) & p_mask);
+        xc_r$d = c_xc;
+        pad_r$d = c_xc >= nx$q;
+        xc = xc_r$q;
+        is_pad = pad_r$q;
+        c_depth = z1 - c_n_s;
+        x_last_r$d = c_xc == nx_last$q;
+        x_first_r$d = c_xc == 'h0;
+        y_last_r$d = c_n_beam == ny_last$q;
+        y_first_r$d = c_n_beam == 'h0;
+        s_last_r$d = c_n_s == z1;
+        bx_at_r$d = border$q + c_xc;
+        bx_far_r$d = border$q + c_xc + c_depth;
+        b_near_r$d = border$q - c_depth;
+        by_at_r$d = border$q + c_n_beam;
+        by_far_r$d = border$q + c_n_beam + c_depth;
         div$clock = clock;
         div$n_s = d_n_s;
         div$n_beam = d_n_beam;
@@ -5703,29 +7309,28 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dyn_ = 1'b0;
         end
         face_c = 'h0;
-        depth = z1 - n_s;
-        bx = border$q + xc;
-        by = border$q + n_beam;
-        if ((xc == nx_last$q) & dx_pos) begin
+        bx = bx_at_r$q;
+        by = by_at_r$q;
+        if (x_last_r$q & dx_pos) begin
             face_c = 'h2;
-            bx = border$q + xc + depth;
+            bx = bx_far_r$q;
         end
-        else if ((xc == 'h0) & dx_neg_nz) begin
+        else if (x_first_r$q & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border$q - depth;
+            bx = b_near_r$q;
         end
-        else if ((n_beam == ny_last$q) & dy_pos) begin
+        else if (y_last_r$q & dy_pos) begin
             face_c = 'h4;
-            by = border$q + n_beam + depth;
+            by = by_far_r$q;
         end
-        else if ((n_beam == 'h0) & dy_neg_nz) begin
+        else if (y_first_r$q & dy_neg_nz) begin
             face_c = 'h5;
-            by = border$q - depth;
+            by = b_near_r$q;
         end
-        if (n_s == z1) begin
+        if (s_last_r$q) begin
             face_c = 'h1;
-            bx = border$q + xc;
-            by = border$q + n_beam;
+            bx = bx_at_r$q;
+            by = by_at_r$q;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -5741,7 +7346,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
+        edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -5899,7 +7504,7 @@ module top$cfb$lanes$3$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$addr_q2
-module top$cfb$lanes$3$border(d,q,clock);
+module top$cfb$lanes$3$b_near_r(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -5915,7 +7520,75 @@ module top$cfb$lanes$3$border(d,q,clock);
        q <= d;
     end
           
+endmodule // top$cfb$lanes$3$b_near_r
+module top$cfb$lanes$3$b_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$b_u
+module top$cfb$lanes$3$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$cfb$lanes$3$border
+module top$cfb$lanes$3$bx_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$bx_at_r
+module top$cfb$lanes$3$bx_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$bx_far_r
 module top$cfb$lanes$3$bx_q(d,q,clock);
     
     // Module arguments
@@ -5933,6 +7606,40 @@ module top$cfb$lanes$3$bx_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$bx_q
+module top$cfb$lanes$3$by_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$by_at_r
+module top$cfb$lanes$3$by_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$by_far_r
 module top$cfb$lanes$3$by_q(d,q,clock);
     
     // Module arguments
@@ -6213,6 +7920,23 @@ module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,wr
        end
     end
 endmodule // top$cfb$lanes$3$memory
+module top$cfb$lanes$3$nx(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$nx
 module top$cfb$lanes$3$nx_last(d,q,clock);
     
     // Module arguments
@@ -6225,10 +7949,10 @@ module top$cfb$lanes$3$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$3$nx_last
 module top$cfb$lanes$3$ny_last(d,q,clock);
     
@@ -6242,10 +7966,10 @@ module top$cfb$lanes$3$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$3$ny_last
 module top$cfb$lanes$3$nz_last(d,q,clock);
     
@@ -6259,10 +7983,10 @@ module top$cfb$lanes$3$nz_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$3$nz_last
 module top$cfb$lanes$3$pad_q(d,q,clock);
     
@@ -6281,7 +8005,7 @@ module top$cfb$lanes$3$pad_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$pad_q
-module top$cfb$lanes$3$par_dx_pos(d,q,clock);
+module top$cfb$lanes$3$pad_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -6297,6 +8021,23 @@ module top$cfb$lanes$3$par_dx_pos(d,q,clock);
        q <= d;
     end
           
+endmodule // top$cfb$lanes$3$pad_r
+module top$cfb$lanes$3$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$cfb$lanes$3$par_dx_pos
 module top$cfb$lanes$3$par_dxm(d,q,clock);
     
@@ -6310,10 +8051,10 @@ module top$cfb$lanes$3$par_dxm(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$3$par_dxm
 module top$cfb$lanes$3$par_dxn(d,q,clock);
     
@@ -6327,10 +8068,10 @@ module top$cfb$lanes$3$par_dxn(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$3$par_dxn
 module top$cfb$lanes$3$par_dy_pos(d,q,clock);
     
@@ -6344,10 +8085,10 @@ module top$cfb$lanes$3$par_dy_pos(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$3$par_dy_pos
 module top$cfb$lanes$3$par_dym(d,q,clock);
     
@@ -6361,12 +8102,29 @@ module top$cfb$lanes$3$par_dym(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$cfb$lanes$3$par_dym
 module top$cfb$lanes$3$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$par_dyn
+module top$cfb$lanes$3$s_last_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -6382,7 +8140,41 @@ module top$cfb$lanes$3$par_dyn(d,q,clock);
        q <= d;
     end
           
-endmodule // top$cfb$lanes$3$par_dyn
+endmodule // top$cfb$lanes$3$s_last_r
+module top$cfb$lanes$3$slab_hi(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$slab_hi
+module top$cfb$lanes$3$slab_lo(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$slab_lo
 module top$cfb$lanes$3$sr_q(d,q,clock);
     
     // Module arguments
@@ -6400,6 +8192,40 @@ module top$cfb$lanes$3$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$sr_q
+module top$cfb$lanes$3$x_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$x_first_r
+module top$cfb$lanes$3$x_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$x_last_r
 module top$cfb$lanes$3$x_q(d,q,clock);
     
     // Module arguments
@@ -6417,6 +8243,57 @@ module top$cfb$lanes$3$x_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$x_q
+module top$cfb$lanes$3$xc_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$xc_r
+module top$cfb$lanes$3$y_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$y_first_r
+module top$cfb$lanes$3$y_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$y_last_r
 module top$cfb$lanes$3$y_q(d,q,clock);
     
     // Module arguments
@@ -6536,6 +8413,23 @@ module top$cfb$nb_d4(d,q,clock);
     end
           
 endmodule // top$cfb$nb_d4
+module top$cfb$nb_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nb_end
 module top$cfb$nb_left(d,q,clock);
     
     // Module arguments
@@ -6655,6 +8549,23 @@ module top$cfb$nbeam_d4(d,q,clock);
     end
           
 endmodule // top$cfb$nbeam_d4
+module top$cfb$nbeam_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nbeam_end
 module top$cfb$nbeam_left(d,q,clock);
     
     // Module arguments
@@ -6774,6 +8685,23 @@ module top$cfb$ns_d4(d,q,clock);
     end
           
 endmodule // top$cfb$ns_d4
+module top$cfb$ns_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ns_end
 module top$cfb$ns_left(d,q,clock);
     
     // Module arguments
@@ -6825,6 +8753,23 @@ module top$cfb$ny_last(d,q,clock);
     end
           
 endmodule // top$cfb$ny_last
+module top$cfb$ny_last_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ny_last_zero
 module top$cfb$run_d1(d,q,clock);
     
     // Module arguments
@@ -7054,9 +8999,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
     reg  [15:0] lanes$0$a_n_s;
     reg  [15:0] lanes$0$a_n_beam;
     reg  [15:0] lanes$0$a_n_b;
+    reg  [15:0] lanes$0$c_n_s;
+    reg  [15:0] lanes$0$c_n_beam;
+    reg  [15:0] lanes$0$c_n_b;
     reg  [15:0] lanes$0$n_s;
     reg  [15:0] lanes$0$n_beam;
-    reg  [15:0] lanes$0$n_b;
     reg  lanes$0$load_enable;
     reg  [7:0] lanes$0$load_module;
     reg  [15:0] lanes$0$load_address;
@@ -7097,9 +9044,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
     reg  [15:0] lanes$1$a_n_s;
     reg  [15:0] lanes$1$a_n_beam;
     reg  [15:0] lanes$1$a_n_b;
+    reg  [15:0] lanes$1$c_n_s;
+    reg  [15:0] lanes$1$c_n_beam;
+    reg  [15:0] lanes$1$c_n_b;
     reg  [15:0] lanes$1$n_s;
     reg  [15:0] lanes$1$n_beam;
-    reg  [15:0] lanes$1$n_b;
     reg  lanes$1$load_enable;
     reg  [7:0] lanes$1$load_module;
     reg  [15:0] lanes$1$load_address;
@@ -7140,9 +9089,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
     reg  [15:0] lanes$2$a_n_s;
     reg  [15:0] lanes$2$a_n_beam;
     reg  [15:0] lanes$2$a_n_b;
+    reg  [15:0] lanes$2$c_n_s;
+    reg  [15:0] lanes$2$c_n_beam;
+    reg  [15:0] lanes$2$c_n_b;
     reg  [15:0] lanes$2$n_s;
     reg  [15:0] lanes$2$n_beam;
-    reg  [15:0] lanes$2$n_b;
     reg  lanes$2$load_enable;
     reg  [7:0] lanes$2$load_module;
     reg  [15:0] lanes$2$load_address;
@@ -7183,9 +9134,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
     reg  [15:0] lanes$3$a_n_s;
     reg  [15:0] lanes$3$a_n_beam;
     reg  [15:0] lanes$3$a_n_b;
+    reg  [15:0] lanes$3$c_n_s;
+    reg  [15:0] lanes$3$c_n_beam;
+    reg  [15:0] lanes$3$c_n_b;
     reg  [15:0] lanes$3$n_s;
     reg  [15:0] lanes$3$n_beam;
-    reg  [15:0] lanes$3$n_b;
     reg  lanes$3$load_enable;
     reg  [7:0] lanes$3$load_module;
     reg  [15:0] lanes$3$load_address;
@@ -7308,6 +9261,21 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
     reg  [15:0] ns_left$d;
     wire  [15:0] ns_left$q;
     reg  ns_left$clock;
+    reg  nb_end$d;
+    wire  nb_end$q;
+    reg  nb_end$clock;
+    reg  nbeam_end$d;
+    wire  nbeam_end$q;
+    reg  nbeam_end$clock;
+    reg  ns_end$d;
+    wire  ns_end$q;
+    reg  ns_end$clock;
+    reg  ny_last_zero$d;
+    wire  ny_last_zero$q;
+    reg  ny_last_zero$clock;
+    reg  b_last_zero$d;
+    wire  b_last_zero$q;
+    reg  b_last_zero$clock;
     
     // Local signals
     reg  e_run;
@@ -7337,9 +9305,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         .a_n_s(lanes$0$a_n_s),
         .a_n_beam(lanes$0$a_n_beam),
         .a_n_b(lanes$0$a_n_b),
+        .c_n_s(lanes$0$c_n_s),
+        .c_n_beam(lanes$0$c_n_beam),
+        .c_n_b(lanes$0$c_n_b),
         .n_s(lanes$0$n_s),
         .n_beam(lanes$0$n_beam),
-        .n_b(lanes$0$n_b),
         .load_enable(lanes$0$load_enable),
         .load_module(lanes$0$load_module),
         .load_address(lanes$0$load_address),
@@ -7382,9 +9352,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         .a_n_s(lanes$1$a_n_s),
         .a_n_beam(lanes$1$a_n_beam),
         .a_n_b(lanes$1$a_n_b),
+        .c_n_s(lanes$1$c_n_s),
+        .c_n_beam(lanes$1$c_n_beam),
+        .c_n_b(lanes$1$c_n_b),
         .n_s(lanes$1$n_s),
         .n_beam(lanes$1$n_beam),
-        .n_b(lanes$1$n_b),
         .load_enable(lanes$1$load_enable),
         .load_module(lanes$1$load_module),
         .load_address(lanes$1$load_address),
@@ -7427,9 +9399,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         .a_n_s(lanes$2$a_n_s),
         .a_n_beam(lanes$2$a_n_beam),
         .a_n_b(lanes$2$a_n_b),
+        .c_n_s(lanes$2$c_n_s),
+        .c_n_beam(lanes$2$c_n_beam),
+        .c_n_b(lanes$2$c_n_b),
         .n_s(lanes$2$n_s),
         .n_beam(lanes$2$n_beam),
-        .n_b(lanes$2$n_b),
         .load_enable(lanes$2$load_enable),
         .load_module(lanes$2$load_module),
         .load_address(lanes$2$load_address),
@@ -7472,9 +9446,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         .a_n_s(lanes$3$a_n_s),
         .a_n_beam(lanes$3$a_n_beam),
         .a_n_b(lanes$3$a_n_b),
+        .c_n_s(lanes$3$c_n_s),
+        .c_n_beam(lanes$3$c_n_beam),
+        .c_n_b(lanes$3$c_n_b),
         .n_s(lanes$3$n_s),
         .n_beam(lanes$3$n_beam),
-        .n_b(lanes$3$n_b),
         .load_enable(lanes$3$load_enable),
         .load_module(lanes$3$load_module),
         .load_address(lanes$3$load_address),
@@ -7645,6 +9621,31 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         .q(ns_left$q),
         .clock(ns_left$clock)
     );
+    top$late$nb_end nb_end(
+        .d(nb_end$d),
+        .q(nb_end$q),
+        .clock(nb_end$clock)
+    );
+    top$late$nbeam_end nbeam_end(
+        .d(nbeam_end$d),
+        .q(nbeam_end$q),
+        .clock(nbeam_end$clock)
+    );
+    top$late$ns_end ns_end(
+        .d(ns_end$d),
+        .q(ns_end$q),
+        .clock(ns_end$clock)
+    );
+    top$late$ny_last_zero ny_last_zero(
+        .d(ny_last_zero$d),
+        .q(ny_last_zero$q),
+        .clock(ny_last_zero$clock)
+    );
+    top$late$b_last_zero b_last_zero(
+        .d(b_last_zero$d),
+        .q(b_last_zero$q),
+        .clock(b_last_zero$clock)
+    );
     
     // Update code
     reg  busy_pass;
@@ -7678,6 +9679,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         nb_left$clock = clock;
         nbeam_left$clock = clock;
         ns_left$clock = clock;
+        nb_end$clock = clock;
+        nbeam_end$clock = clock;
+        ns_end$clock = clock;
+        ny_last_zero$clock = clock;
+        b_last_zero$clock = clock;
         running$d = running$q;
         ns_c$d = ns_c$q;
         nbeam_c$d = nbeam_c$q;
@@ -7707,6 +9713,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         nb_left$d = nb_left$q;
         nbeam_left$d = nbeam_left$q;
         ns_left$d = ns_left$q;
+        nb_end$d = nb_end$q;
+        nbeam_end$d = nbeam_end$q;
+        ns_end$d = ns_end$q;
+        ny_last_zero$d = ny_last_zero$q;
+        b_last_zero$d = b_last_zero$q;
         lead$clock = clock;
         lead$reset = reset;
         lead$running = running$q;
@@ -7745,6 +9756,8 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         b_m1 = beats[('h20)+:(16)] - 'h1;
         ny_last$d = ny_m1;
         b_last$d = b_m1;
+        ny_last_zero$d = ny_m1 == 'h0;
+        b_last_zero$d = b_m1 == 'h0;
         lanes$0$clock = clock;
         lanes$0$dims = dims;
         lanes$0$slices = slices;
@@ -7761,9 +9774,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         lanes$0$a_n_s = e_ns;
         lanes$0$a_n_beam = e_nbeam;
         lanes$0$a_n_b = e_nb;
+        lanes$0$c_n_s = ns_d3$q;
+        lanes$0$c_n_beam = nbeam_d3$q;
+        lanes$0$c_n_b = nb_d3$q;
         lanes$0$n_s = ns_d4$q;
         lanes$0$n_beam = nbeam_d4$q;
-        lanes$0$n_b = nb_d4$q;
         lanes$0$load_enable = load_enable;
         lanes$0$load_module = load_module;
         lanes$0$load_address = load_address;
@@ -7804,9 +9819,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         lanes$1$a_n_s = e_ns;
         lanes$1$a_n_beam = e_nbeam;
         lanes$1$a_n_b = e_nb;
+        lanes$1$c_n_s = ns_d3$q;
+        lanes$1$c_n_beam = nbeam_d3$q;
+        lanes$1$c_n_b = nb_d3$q;
         lanes$1$n_s = ns_d4$q;
         lanes$1$n_beam = nbeam_d4$q;
-        lanes$1$n_b = nb_d4$q;
         lanes$1$load_enable = load_enable;
         lanes$1$load_module = load_module;
         lanes$1$load_address = load_address;
@@ -7847,9 +9864,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         lanes$2$a_n_s = e_ns;
         lanes$2$a_n_beam = e_nbeam;
         lanes$2$a_n_b = e_nb;
+        lanes$2$c_n_s = ns_d3$q;
+        lanes$2$c_n_beam = nbeam_d3$q;
+        lanes$2$c_n_b = nb_d3$q;
         lanes$2$n_s = ns_d4$q;
         lanes$2$n_beam = nbeam_d4$q;
-        lanes$2$n_b = nb_d4$q;
         lanes$2$load_enable = load_enable;
         lanes$2$load_module = load_module;
         lanes$2$load_address = load_address;
@@ -7890,9 +9909,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         lanes$3$a_n_s = e_ns;
         lanes$3$a_n_beam = e_nbeam;
         lanes$3$a_n_b = e_nb;
+        lanes$3$c_n_s = ns_d3$q;
+        lanes$3$c_n_beam = nbeam_d3$q;
+        lanes$3$c_n_b = nb_d3$q;
         lanes$3$n_s = ns_d4$q;
         lanes$3$n_beam = nbeam_d4$q;
-        lanes$3$n_b = nb_d4$q;
         lanes$3$load_enable = load_enable;
         lanes$3$load_module = load_module;
         lanes$3$load_address = load_address;
@@ -7925,25 +9946,33 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
             nb_left$d = b_m1;
             nbeam_left$d = ny_m1;
             ns_left$d = z1 - z0;
+            nb_end$d = b_m1 == 'h0;
+            nbeam_end$d = ny_m1 == 'h0;
+            ns_end$d = z1 == z0;
         end
         if (running$q) begin
-            if (nb_left$q != 'h0) begin
+            if (~nb_end$q) begin
                 nb_c$d = nb_c$q + 'h1;
                 nb_left$d = nb_left$q - 'h1;
+                nb_end$d = nb_left$q == 'h1;
             end
             else begin
                 nb_c$d = 'h0;
                 nb_left$d = b_last$q;
-                if (nbeam_left$q != 'h0) begin
+                nb_end$d = b_last_zero$q;
+                if (~nbeam_end$q) begin
                     nbeam_c$d = nbeam_c$q + 'h1;
                     nbeam_left$d = nbeam_left$q - 'h1;
+                    nbeam_end$d = nbeam_left$q == 'h1;
                 end
                 else begin
                     nbeam_c$d = 'h0;
                     nbeam_left$d = ny_last$q;
-                    if (ns_left$q != 'h0) begin
+                    nbeam_end$d = ny_last_zero$q;
+                    if (~ns_end$q) begin
                         ns_c$d = ns_c$q + 'h1;
                         ns_left$d = ns_left$q - 'h1;
+                        ns_end$d = ns_left$q == 'h1;
                     end
                     else begin
                         running$d = 1'b0;
@@ -7988,7 +10017,24 @@ module top$late$b_last(d,q,clock);
     end
           
 endmodule // top$late$b_last
-module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$late$b_last_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$b_last_zero
+module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,c_n_s,c_n_beam,c_n_b,n_s,n_beam,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -8007,9 +10053,11 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
+    input wire  [15:0] c_n_s;
+    input wire  [15:0] c_n_beam;
+    input wire  [15:0] c_n_b;
     input wire  [15:0] n_s;
     input wire  [15:0] n_beam;
-    input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
     input wire  [15:0] load_address;
@@ -8050,6 +10098,9 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx$d;
+    wire  [15:0] nx$q;
+    reg  nx$clock;
     reg  [15:0] nx_last$d;
     wire  [15:0] nx_last$q;
     reg  nx_last$clock;
@@ -8062,6 +10113,15 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [15:0] border$d;
     wire  [15:0] border$q;
     reg  border$clock;
+    reg  [15:0] b_u$d;
+    wire  [15:0] b_u$q;
+    reg  b_u$clock;
+    reg  [15:0] slab_lo$d;
+    wire  [15:0] slab_lo$q;
+    reg  slab_lo$clock;
+    reg  [15:0] slab_hi$d;
+    wire  [15:0] slab_hi$q;
+    reg  slab_hi$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -8110,6 +10170,12 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  halo_q$d;
     wire  halo_q$q;
     reg  halo_q$clock;
+    reg  [15:0] xc_r$d;
+    wire  [15:0] xc_r$q;
+    reg  xc_r$clock;
+    reg  pad_r$d;
+    wire  pad_r$q;
+    reg  pad_r$clock;
     reg  [15:0] a_u$d;
     wire  [15:0] a_u$q;
     reg  a_u$clock;
@@ -8140,6 +10206,36 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [31:0] addr$d;
     wire  [31:0] addr$q;
     reg  addr$clock;
+    reg  x_last_r$d;
+    wire  x_last_r$q;
+    reg  x_last_r$clock;
+    reg  x_first_r$d;
+    wire  x_first_r$q;
+    reg  x_first_r$clock;
+    reg  y_last_r$d;
+    wire  y_last_r$q;
+    reg  y_last_r$clock;
+    reg  y_first_r$d;
+    wire  y_first_r$q;
+    reg  y_first_r$clock;
+    reg  s_last_r$d;
+    wire  s_last_r$q;
+    reg  s_last_r$clock;
+    reg  [15:0] bx_at_r$d;
+    wire  [15:0] bx_at_r$q;
+    reg  bx_at_r$clock;
+    reg  [15:0] bx_far_r$d;
+    wire  [15:0] bx_far_r$q;
+    reg  bx_far_r$clock;
+    reg  [15:0] b_near_r$d;
+    wire  [15:0] b_near_r$q;
+    reg  b_near_r$clock;
+    reg  [15:0] by_at_r$d;
+    wire  [15:0] by_at_r$q;
+    reg  by_at_r$clock;
+    reg  [15:0] by_far_r$d;
+    wire  [15:0] by_far_r$q;
+    reg  by_far_r$clock;
     reg  [15:0] x_q$d;
     wire  [15:0] x_q$q;
     reg  x_q$clock;
@@ -8178,15 +10274,11 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  by_q$clock;
     
     // Local signals
-    reg  [15:0] nx;
     reg  [15:0] z0;
     reg  [15:0] z1;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [15:0] b_u;
-    reg  [15:0] slab_lo;
-    reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
     reg  dxn;
@@ -8198,11 +10290,12 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  dx_neg_nz;
     reg  dy_pos;
     reg  dy_neg_nz;
+    reg  [15:0] c_xc;
     reg  [15:0] xc;
     reg  [15:0] a_xc;
     reg  is_pad;
     reg  [2:0] face_c;
-    reg  [15:0] depth;
+    reg  [15:0] c_depth;
     reg  [15:0] bx;
     reg  [15:0] by;
     
@@ -8215,6 +10308,11 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$0$nx nx(
+        .d(nx$d),
+        .q(nx$q),
+        .clock(nx$clock)
     );
     top$late$lanes$0$nx_last nx_last(
         .d(nx_last$d),
@@ -8235,6 +10333,21 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .d(border$d),
         .q(border$q),
         .clock(border$clock)
+    );
+    top$late$lanes$0$b_u b_u(
+        .d(b_u$d),
+        .q(b_u$q),
+        .clock(b_u$clock)
+    );
+    top$late$lanes$0$slab_lo slab_lo(
+        .d(slab_lo$d),
+        .q(slab_lo$q),
+        .clock(slab_lo$clock)
+    );
+    top$late$lanes$0$slab_hi slab_hi(
+        .d(slab_hi$d),
+        .q(slab_hi$q),
+        .clock(slab_hi$clock)
     );
     top$late$lanes$0$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -8296,6 +10409,16 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .q(halo_q$q),
         .clock(halo_q$clock)
     );
+    top$late$lanes$0$xc_r xc_r(
+        .d(xc_r$d),
+        .q(xc_r$q),
+        .clock(xc_r$clock)
+    );
+    top$late$lanes$0$pad_r pad_r(
+        .d(pad_r$d),
+        .q(pad_r$q),
+        .clock(pad_r$clock)
+    );
     top$late$lanes$0$a_u a_u(
         .d(a_u$d),
         .q(a_u$q),
@@ -8345,6 +10468,56 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .d(addr$d),
         .q(addr$q),
         .clock(addr$clock)
+    );
+    top$late$lanes$0$x_last_r x_last_r(
+        .d(x_last_r$d),
+        .q(x_last_r$q),
+        .clock(x_last_r$clock)
+    );
+    top$late$lanes$0$x_first_r x_first_r(
+        .d(x_first_r$d),
+        .q(x_first_r$q),
+        .clock(x_first_r$clock)
+    );
+    top$late$lanes$0$y_last_r y_last_r(
+        .d(y_last_r$d),
+        .q(y_last_r$q),
+        .clock(y_last_r$clock)
+    );
+    top$late$lanes$0$y_first_r y_first_r(
+        .d(y_first_r$d),
+        .q(y_first_r$q),
+        .clock(y_first_r$clock)
+    );
+    top$late$lanes$0$s_last_r s_last_r(
+        .d(s_last_r$d),
+        .q(s_last_r$q),
+        .clock(s_last_r$clock)
+    );
+    top$late$lanes$0$bx_at_r bx_at_r(
+        .d(bx_at_r$d),
+        .q(bx_at_r$q),
+        .clock(bx_at_r$clock)
+    );
+    top$late$lanes$0$bx_far_r bx_far_r(
+        .d(bx_far_r$d),
+        .q(bx_far_r$q),
+        .clock(bx_far_r$clock)
+    );
+    top$late$lanes$0$b_near_r b_near_r(
+        .d(b_near_r$d),
+        .q(b_near_r$q),
+        .clock(b_near_r$clock)
+    );
+    top$late$lanes$0$by_at_r by_at_r(
+        .d(by_at_r$d),
+        .q(by_at_r$q),
+        .clock(by_at_r$clock)
+    );
+    top$late$lanes$0$by_far_r by_far_r(
+        .d(by_far_r$d),
+        .q(by_far_r$q),
+        .clock(by_far_r$clock)
     );
     top$late$lanes$0$x_q x_q(
         .d(x_q$d),
@@ -8438,6 +10611,22 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        xc_r$clock = clock;
+        pad_r$clock = clock;
+        x_last_r$clock = clock;
+        x_first_r$clock = clock;
+        y_last_r$clock = clock;
+        y_first_r$clock = clock;
+        s_last_r$clock = clock;
+        bx_at_r$clock = clock;
+        bx_far_r$clock = clock;
+        b_near_r$clock = clock;
+        by_at_r$clock = clock;
+        by_far_r$clock = clock;
+        nx$clock = clock;
+        b_u$clock = clock;
+        slab_lo$clock = clock;
+        slab_hi$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -8476,6 +10665,22 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        xc_r$d = xc_r$q;
+        pad_r$d = pad_r$q;
+        x_last_r$d = x_last_r$q;
+        x_first_r$d = x_first_r$q;
+        y_last_r$d = y_last_r$q;
+        y_first_r$d = y_first_r$q;
+        s_last_r$d = s_last_r$q;
+        bx_at_r$d = bx_at_r$q;
+        bx_far_r$d = bx_far_r$q;
+        b_near_r$d = b_near_r$q;
+        by_at_r$d = by_at_r$q;
+        by_far_r$d = by_far_r$q;
+        nx$d = nx$q;
+        b_u$d = b_u$q;
+        slab_lo$d = slab_lo$q;
+        slab_hi$d = slab_hi$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -8486,7 +10691,7 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
-        nx = dims[('h0)+:(16)];
+        nx$d = dims[('h0)+:(16)];
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         nz_last$d = dims[('h20)+:(16)] - 'h1;
@@ -8496,9 +10701,9 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
-        b_u = address_reg[('h0)+:(16)];
-        slab_lo = address_reg[('h10)+:(16)];
-        slab_hi = address_reg[('h20)+:(16)];
+        b_u$d = address_reg[('h0)+:(16)];
+        slab_lo$d = address_reg[('h10)+:(16)];
+        slab_hi$d = address_reg[('h20)+:(16)];
         dx_abs = dx;
         if (dx['h3f]) begin
             dx_abs = 'h0 - dx;
@@ -8519,7 +10724,7 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         memory$write_address = load_address;
         memory$write_data = load_data;
         a_xc = (a_n_b << p_shift) | ((lane - a_n_beam - a_n_s) & p_mask);
-        a_pad$d = a_xc >= nx;
+        a_pad$d = a_xc >= nx$q;
         a_u$d = a_xc;
         if (u_from == 'h1) begin
             a_u$d = a_n_beam;
@@ -8542,9 +10747,9 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u;
-        m_w_lo$d = a_w$q * slab_lo;
-        m_w_hi$d = a_w$q * slab_hi;
+        m_v$d = a_v$q * b_u$q;
+        m_w_lo$d = a_w$q * slab_lo$q;
+        m_w_hi$d = a_w$q * slab_hi$q;
         m_pad$d = a_pad$q;
         addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
         if (m_pad$q) begin
@@ -8552,8 +10757,22 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         end
         memory$read_address = 16'(addr$q);
         ext_addr = addr$q;
-        xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
-        is_pad = xc >= nx;
+        c_xc = (c_n_b << p_shift) | ((lane - c_n_beam - c_n_s) & p_mask);
+        xc_r$d = c_xc;
+        pad_r$d = c_xc >= nx$q;
+        xc = xc_r$q;
+        is_pad = pad_r$q;
+        c_depth = z1 - c_n_s;
+        x_last_r$d = c_xc == nx_last$q;
+        x_first_r$d = c_xc == 'h0;
+        y_last_r$d = c_n_beam == ny_last$q;
+        y_first_r$d = c_n_beam == 'h0;
+        s_last_r$d = c_n_s == z1;
+        bx_at_r$d = border$q + c_xc;
+        bx_far_r$d = border$q + c_xc + c_depth;
+        b_near_r$d = border$q - c_depth;
+        by_at_r$d = border$q + c_n_beam;
+        by_far_r$d = border$q + c_n_beam + c_depth;
         div$clock = clock;
         div$n_s = d_n_s;
         div$n_beam = d_n_beam;
@@ -8588,29 +10807,28 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             dyn_ = 1'b0;
         end
         face_c = 'h0;
-        depth = z1 - n_s;
-        bx = border$q + xc;
-        by = border$q + n_beam;
-        if ((xc == nx_last$q) & dx_pos) begin
+        bx = bx_at_r$q;
+        by = by_at_r$q;
+        if (x_last_r$q & dx_pos) begin
             face_c = 'h2;
-            bx = border$q + xc + depth;
+            bx = bx_far_r$q;
         end
-        else if ((xc == 'h0) & dx_neg_nz) begin
+        else if (x_first_r$q & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border$q - depth;
+            bx = b_near_r$q;
         end
-        else if ((n_beam == ny_last$q) & dy_pos) begin
+        else if (y_last_r$q & dy_pos) begin
             face_c = 'h4;
-            by = border$q + n_beam + depth;
+            by = by_far_r$q;
         end
-        else if ((n_beam == 'h0) & dy_neg_nz) begin
+        else if (y_first_r$q & dy_neg_nz) begin
             face_c = 'h5;
-            by = border$q - depth;
+            by = b_near_r$q;
         end
-        if (n_s == z1) begin
+        if (s_last_r$q) begin
             face_c = 'h1;
-            bx = border$q + xc;
-            by = border$q + n_beam;
+            bx = bx_at_r$q;
+            by = by_at_r$q;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -8626,7 +10844,7 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
+        edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -8784,7 +11002,7 @@ module top$late$lanes$0$addr_q2(d,q,clock);
     end
           
 endmodule // top$late$lanes$0$addr_q2
-module top$late$lanes$0$border(d,q,clock);
+module top$late$lanes$0$b_near_r(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -8800,7 +11018,75 @@ module top$late$lanes$0$border(d,q,clock);
        q <= d;
     end
           
+endmodule // top$late$lanes$0$b_near_r
+module top$late$lanes$0$b_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$0$b_u
+module top$late$lanes$0$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$late$lanes$0$border
+module top$late$lanes$0$bx_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$bx_at_r
+module top$late$lanes$0$bx_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$bx_far_r
 module top$late$lanes$0$bx_q(d,q,clock);
     
     // Module arguments
@@ -8818,6 +11104,40 @@ module top$late$lanes$0$bx_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$0$bx_q
+module top$late$lanes$0$by_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$by_at_r
+module top$late$lanes$0$by_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$by_far_r
 module top$late$lanes$0$by_q(d,q,clock);
     
     // Module arguments
@@ -9098,6 +11418,23 @@ module top$late$lanes$0$memory(read_address,read_clock,read_data,write_address,w
        end
     end
 endmodule // top$late$lanes$0$memory
+module top$late$lanes$0$nx(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$0$nx
 module top$late$lanes$0$nx_last(d,q,clock);
     
     // Module arguments
@@ -9110,10 +11447,10 @@ module top$late$lanes$0$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$0$nx_last
 module top$late$lanes$0$ny_last(d,q,clock);
     
@@ -9127,10 +11464,10 @@ module top$late$lanes$0$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$0$ny_last
 module top$late$lanes$0$nz_last(d,q,clock);
     
@@ -9144,10 +11481,10 @@ module top$late$lanes$0$nz_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$0$nz_last
 module top$late$lanes$0$pad_q(d,q,clock);
     
@@ -9166,7 +11503,7 @@ module top$late$lanes$0$pad_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$0$pad_q
-module top$late$lanes$0$par_dx_pos(d,q,clock);
+module top$late$lanes$0$pad_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -9182,6 +11519,23 @@ module top$late$lanes$0$par_dx_pos(d,q,clock);
        q <= d;
     end
           
+endmodule // top$late$lanes$0$pad_r
+module top$late$lanes$0$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$late$lanes$0$par_dx_pos
 module top$late$lanes$0$par_dxm(d,q,clock);
     
@@ -9195,10 +11549,10 @@ module top$late$lanes$0$par_dxm(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$0$par_dxm
 module top$late$lanes$0$par_dxn(d,q,clock);
     
@@ -9212,10 +11566,10 @@ module top$late$lanes$0$par_dxn(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$0$par_dxn
 module top$late$lanes$0$par_dy_pos(d,q,clock);
     
@@ -9229,10 +11583,10 @@ module top$late$lanes$0$par_dy_pos(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$0$par_dy_pos
 module top$late$lanes$0$par_dym(d,q,clock);
     
@@ -9246,12 +11600,29 @@ module top$late$lanes$0$par_dym(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$0$par_dym
 module top$late$lanes$0$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$0$par_dyn
+module top$late$lanes$0$s_last_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -9267,7 +11638,41 @@ module top$late$lanes$0$par_dyn(d,q,clock);
        q <= d;
     end
           
-endmodule // top$late$lanes$0$par_dyn
+endmodule // top$late$lanes$0$s_last_r
+module top$late$lanes$0$slab_hi(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$0$slab_hi
+module top$late$lanes$0$slab_lo(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$0$slab_lo
 module top$late$lanes$0$sr_q(d,q,clock);
     
     // Module arguments
@@ -9285,6 +11690,40 @@ module top$late$lanes$0$sr_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$0$sr_q
+module top$late$lanes$0$x_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$x_first_r
+module top$late$lanes$0$x_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$x_last_r
 module top$late$lanes$0$x_q(d,q,clock);
     
     // Module arguments
@@ -9302,6 +11741,57 @@ module top$late$lanes$0$x_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$0$x_q
+module top$late$lanes$0$xc_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$xc_r
+module top$late$lanes$0$y_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$y_first_r
+module top$late$lanes$0$y_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$y_last_r
 module top$late$lanes$0$y_q(d,q,clock);
     
     // Module arguments
@@ -9336,7 +11826,7 @@ module top$late$lanes$0$z_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$0$z_q
-module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,c_n_s,c_n_beam,c_n_b,n_s,n_beam,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -9355,9 +11845,11 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
+    input wire  [15:0] c_n_s;
+    input wire  [15:0] c_n_beam;
+    input wire  [15:0] c_n_b;
     input wire  [15:0] n_s;
     input wire  [15:0] n_beam;
-    input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
     input wire  [15:0] load_address;
@@ -9398,6 +11890,9 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx$d;
+    wire  [15:0] nx$q;
+    reg  nx$clock;
     reg  [15:0] nx_last$d;
     wire  [15:0] nx_last$q;
     reg  nx_last$clock;
@@ -9410,6 +11905,15 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [15:0] border$d;
     wire  [15:0] border$q;
     reg  border$clock;
+    reg  [15:0] b_u$d;
+    wire  [15:0] b_u$q;
+    reg  b_u$clock;
+    reg  [15:0] slab_lo$d;
+    wire  [15:0] slab_lo$q;
+    reg  slab_lo$clock;
+    reg  [15:0] slab_hi$d;
+    wire  [15:0] slab_hi$q;
+    reg  slab_hi$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -9458,6 +11962,12 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  halo_q$d;
     wire  halo_q$q;
     reg  halo_q$clock;
+    reg  [15:0] xc_r$d;
+    wire  [15:0] xc_r$q;
+    reg  xc_r$clock;
+    reg  pad_r$d;
+    wire  pad_r$q;
+    reg  pad_r$clock;
     reg  [15:0] a_u$d;
     wire  [15:0] a_u$q;
     reg  a_u$clock;
@@ -9488,6 +11998,36 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [31:0] addr$d;
     wire  [31:0] addr$q;
     reg  addr$clock;
+    reg  x_last_r$d;
+    wire  x_last_r$q;
+    reg  x_last_r$clock;
+    reg  x_first_r$d;
+    wire  x_first_r$q;
+    reg  x_first_r$clock;
+    reg  y_last_r$d;
+    wire  y_last_r$q;
+    reg  y_last_r$clock;
+    reg  y_first_r$d;
+    wire  y_first_r$q;
+    reg  y_first_r$clock;
+    reg  s_last_r$d;
+    wire  s_last_r$q;
+    reg  s_last_r$clock;
+    reg  [15:0] bx_at_r$d;
+    wire  [15:0] bx_at_r$q;
+    reg  bx_at_r$clock;
+    reg  [15:0] bx_far_r$d;
+    wire  [15:0] bx_far_r$q;
+    reg  bx_far_r$clock;
+    reg  [15:0] b_near_r$d;
+    wire  [15:0] b_near_r$q;
+    reg  b_near_r$clock;
+    reg  [15:0] by_at_r$d;
+    wire  [15:0] by_at_r$q;
+    reg  by_at_r$clock;
+    reg  [15:0] by_far_r$d;
+    wire  [15:0] by_far_r$q;
+    reg  by_far_r$clock;
     reg  [15:0] x_q$d;
     wire  [15:0] x_q$q;
     reg  x_q$clock;
@@ -9526,15 +12066,11 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  by_q$clock;
     
     // Local signals
-    reg  [15:0] nx;
     reg  [15:0] z0;
     reg  [15:0] z1;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [15:0] b_u;
-    reg  [15:0] slab_lo;
-    reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
     reg  dxn;
@@ -9546,11 +12082,12 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  dx_neg_nz;
     reg  dy_pos;
     reg  dy_neg_nz;
+    reg  [15:0] c_xc;
     reg  [15:0] xc;
     reg  [15:0] a_xc;
     reg  is_pad;
     reg  [2:0] face_c;
-    reg  [15:0] depth;
+    reg  [15:0] c_depth;
     reg  [15:0] bx;
     reg  [15:0] by;
     
@@ -9563,6 +12100,11 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$1$nx nx(
+        .d(nx$d),
+        .q(nx$q),
+        .clock(nx$clock)
     );
     top$late$lanes$1$nx_last nx_last(
         .d(nx_last$d),
@@ -9583,6 +12125,21 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .d(border$d),
         .q(border$q),
         .clock(border$clock)
+    );
+    top$late$lanes$1$b_u b_u(
+        .d(b_u$d),
+        .q(b_u$q),
+        .clock(b_u$clock)
+    );
+    top$late$lanes$1$slab_lo slab_lo(
+        .d(slab_lo$d),
+        .q(slab_lo$q),
+        .clock(slab_lo$clock)
+    );
+    top$late$lanes$1$slab_hi slab_hi(
+        .d(slab_hi$d),
+        .q(slab_hi$q),
+        .clock(slab_hi$clock)
     );
     top$late$lanes$1$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -9644,6 +12201,16 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .q(halo_q$q),
         .clock(halo_q$clock)
     );
+    top$late$lanes$1$xc_r xc_r(
+        .d(xc_r$d),
+        .q(xc_r$q),
+        .clock(xc_r$clock)
+    );
+    top$late$lanes$1$pad_r pad_r(
+        .d(pad_r$d),
+        .q(pad_r$q),
+        .clock(pad_r$clock)
+    );
     top$late$lanes$1$a_u a_u(
         .d(a_u$d),
         .q(a_u$q),
@@ -9693,6 +12260,56 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .d(addr$d),
         .q(addr$q),
         .clock(addr$clock)
+    );
+    top$late$lanes$1$x_last_r x_last_r(
+        .d(x_last_r$d),
+        .q(x_last_r$q),
+        .clock(x_last_r$clock)
+    );
+    top$late$lanes$1$x_first_r x_first_r(
+        .d(x_first_r$d),
+        .q(x_first_r$q),
+        .clock(x_first_r$clock)
+    );
+    top$late$lanes$1$y_last_r y_last_r(
+        .d(y_last_r$d),
+        .q(y_last_r$q),
+        .clock(y_last_r$clock)
+    );
+    top$late$lanes$1$y_first_r y_first_r(
+        .d(y_first_r$d),
+        .q(y_first_r$q),
+        .clock(y_first_r$clock)
+    );
+    top$late$lanes$1$s_last_r s_last_r(
+        .d(s_last_r$d),
+        .q(s_last_r$q),
+        .clock(s_last_r$clock)
+    );
+    top$late$lanes$1$bx_at_r bx_at_r(
+        .d(bx_at_r$d),
+        .q(bx_at_r$q),
+        .clock(bx_at_r$clock)
+    );
+    top$late$lanes$1$bx_far_r bx_far_r(
+        .d(bx_far_r$d),
+        .q(bx_far_r$q),
+        .clock(bx_far_r$clock)
+    );
+    top$late$lanes$1$b_near_r b_near_r(
+        .d(b_near_r$d),
+        .q(b_near_r$q),
+        .clock(b_near_r$clock)
+    );
+    top$late$lanes$1$by_at_r by_at_r(
+        .d(by_at_r$d),
+        .q(by_at_r$q),
+        .clock(by_at_r$clock)
+    );
+    top$late$lanes$1$by_far_r by_far_r(
+        .d(by_far_r$d),
+        .q(by_far_r$q),
+        .clock(by_far_r$clock)
     );
     top$late$lanes$1$x_q x_q(
         .d(x_q$d),
@@ -9786,6 +12403,22 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        xc_r$clock = clock;
+        pad_r$clock = clock;
+        x_last_r$clock = clock;
+        x_first_r$clock = clock;
+        y_last_r$clock = clock;
+        y_first_r$clock = clock;
+        s_last_r$clock = clock;
+        bx_at_r$clock = clock;
+        bx_far_r$clock = clock;
+        b_near_r$clock = clock;
+        by_at_r$clock = clock;
+        by_far_r$clock = clock;
+        nx$clock = clock;
+        b_u$clock = clock;
+        slab_lo$clock = clock;
+        slab_hi$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -9824,6 +12457,22 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        xc_r$d = xc_r$q;
+        pad_r$d = pad_r$q;
+        x_last_r$d = x_last_r$q;
+        x_first_r$d = x_first_r$q;
+        y_last_r$d = y_last_r$q;
+        y_first_r$d = y_first_r$q;
+        s_last_r$d = s_last_r$q;
+        bx_at_r$d = bx_at_r$q;
+        bx_far_r$d = bx_far_r$q;
+        b_near_r$d = b_near_r$q;
+        by_at_r$d = by_at_r$q;
+        by_far_r$d = by_far_r$q;
+        nx$d = nx$q;
+        b_u$d = b_u$q;
+        slab_lo$d = slab_lo$q;
+        slab_hi$d = slab_hi$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -9834,7 +12483,7 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
-        nx = dims[('h0)+:(16)];
+        nx$d = dims[('h0)+:(16)];
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         nz_last$d = dims[('h20)+:(16)] - 'h1;
@@ -9844,9 +12493,9 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
-        b_u = address_reg[('h0)+:(16)];
-        slab_lo = address_reg[('h10)+:(16)];
-        slab_hi = address_reg[('h20)+:(16)];
+        b_u$d = address_reg[('h0)+:(16)];
+        slab_lo$d = address_reg[('h10)+:(16)];
+        slab_hi$d = address_reg[('h20)+:(16)];
         dx_abs = dx;
         if (dx['h3f]) begin
             dx_abs = 'h0 - dx;
@@ -9867,7 +12516,7 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         memory$write_address = load_address;
         memory$write_data = load_data;
         a_xc = (a_n_b << p_shift) | ((lane - a_n_beam - a_n_s) & p_mask);
-        a_pad$d = a_xc >= nx;
+        a_pad$d = a_xc >= nx$q;
         a_u$d = a_xc;
         if (u_from == 'h1) begin
             a_u$d = a_n_beam;
@@ -9890,9 +12539,9 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u;
-        m_w_lo$d = a_w$q * slab_lo;
-        m_w_hi$d = a_w$q * slab_hi;
+        m_v$d = a_v$q * b_u$q;
+        m_w_lo$d = a_w$q * slab_lo$q;
+        m_w_hi$d = a_w$q * slab_hi$q;
         m_pad$d = a_pad$q;
         addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
         if (m_pad$q) begin
@@ -9900,8 +12549,22 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         end
         memory$read_address = 16'(addr$q);
         ext_addr = addr$q;
-        xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
-        is_pad = xc >= nx;
+        c_xc = (c_n_b << p_shift) | ((lane - c_n_beam - c_n_s) & p_mask);
+        xc_r$d = c_xc;
+        pad_r$d = c_xc >= nx$q;
+        xc = xc_r$q;
+        is_pad = pad_r$q;
+        c_depth = z1 - c_n_s;
+        x_last_r$d = c_xc == nx_last$q;
+        x_first_r$d = c_xc == 'h0;
+        y_last_r$d = c_n_beam == ny_last$q;
+        y_first_r$d = c_n_beam == 'h0;
+        s_last_r$d = c_n_s == z1;
+        bx_at_r$d = border$q + c_xc;
+        bx_far_r$d = border$q + c_xc + c_depth;
+        b_near_r$d = border$q - c_depth;
+        by_at_r$d = border$q + c_n_beam;
+        by_far_r$d = border$q + c_n_beam + c_depth;
         div$clock = clock;
         div$n_s = d_n_s;
         div$n_beam = d_n_beam;
@@ -9936,29 +12599,28 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             dyn_ = 1'b0;
         end
         face_c = 'h0;
-        depth = z1 - n_s;
-        bx = border$q + xc;
-        by = border$q + n_beam;
-        if ((xc == nx_last$q) & dx_pos) begin
+        bx = bx_at_r$q;
+        by = by_at_r$q;
+        if (x_last_r$q & dx_pos) begin
             face_c = 'h2;
-            bx = border$q + xc + depth;
+            bx = bx_far_r$q;
         end
-        else if ((xc == 'h0) & dx_neg_nz) begin
+        else if (x_first_r$q & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border$q - depth;
+            bx = b_near_r$q;
         end
-        else if ((n_beam == ny_last$q) & dy_pos) begin
+        else if (y_last_r$q & dy_pos) begin
             face_c = 'h4;
-            by = border$q + n_beam + depth;
+            by = by_far_r$q;
         end
-        else if ((n_beam == 'h0) & dy_neg_nz) begin
+        else if (y_first_r$q & dy_neg_nz) begin
             face_c = 'h5;
-            by = border$q - depth;
+            by = b_near_r$q;
         end
-        if (n_s == z1) begin
+        if (s_last_r$q) begin
             face_c = 'h1;
-            bx = border$q + xc;
-            by = border$q + n_beam;
+            bx = bx_at_r$q;
+            by = by_at_r$q;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -9974,7 +12636,7 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
+        edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -10132,7 +12794,7 @@ module top$late$lanes$1$addr_q2(d,q,clock);
     end
           
 endmodule // top$late$lanes$1$addr_q2
-module top$late$lanes$1$border(d,q,clock);
+module top$late$lanes$1$b_near_r(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -10148,7 +12810,75 @@ module top$late$lanes$1$border(d,q,clock);
        q <= d;
     end
           
+endmodule // top$late$lanes$1$b_near_r
+module top$late$lanes$1$b_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$1$b_u
+module top$late$lanes$1$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$late$lanes$1$border
+module top$late$lanes$1$bx_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$bx_at_r
+module top$late$lanes$1$bx_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$bx_far_r
 module top$late$lanes$1$bx_q(d,q,clock);
     
     // Module arguments
@@ -10166,6 +12896,40 @@ module top$late$lanes$1$bx_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$1$bx_q
+module top$late$lanes$1$by_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$by_at_r
+module top$late$lanes$1$by_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$by_far_r
 module top$late$lanes$1$by_q(d,q,clock);
     
     // Module arguments
@@ -10446,6 +13210,23 @@ module top$late$lanes$1$memory(read_address,read_clock,read_data,write_address,w
        end
     end
 endmodule // top$late$lanes$1$memory
+module top$late$lanes$1$nx(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$1$nx
 module top$late$lanes$1$nx_last(d,q,clock);
     
     // Module arguments
@@ -10458,10 +13239,10 @@ module top$late$lanes$1$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$1$nx_last
 module top$late$lanes$1$ny_last(d,q,clock);
     
@@ -10475,10 +13256,10 @@ module top$late$lanes$1$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$1$ny_last
 module top$late$lanes$1$nz_last(d,q,clock);
     
@@ -10492,10 +13273,10 @@ module top$late$lanes$1$nz_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$1$nz_last
 module top$late$lanes$1$pad_q(d,q,clock);
     
@@ -10514,7 +13295,7 @@ module top$late$lanes$1$pad_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$1$pad_q
-module top$late$lanes$1$par_dx_pos(d,q,clock);
+module top$late$lanes$1$pad_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -10530,6 +13311,23 @@ module top$late$lanes$1$par_dx_pos(d,q,clock);
        q <= d;
     end
           
+endmodule // top$late$lanes$1$pad_r
+module top$late$lanes$1$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$late$lanes$1$par_dx_pos
 module top$late$lanes$1$par_dxm(d,q,clock);
     
@@ -10543,10 +13341,10 @@ module top$late$lanes$1$par_dxm(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$1$par_dxm
 module top$late$lanes$1$par_dxn(d,q,clock);
     
@@ -10560,10 +13358,10 @@ module top$late$lanes$1$par_dxn(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$1$par_dxn
 module top$late$lanes$1$par_dy_pos(d,q,clock);
     
@@ -10577,10 +13375,10 @@ module top$late$lanes$1$par_dy_pos(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$1$par_dy_pos
 module top$late$lanes$1$par_dym(d,q,clock);
     
@@ -10594,12 +13392,29 @@ module top$late$lanes$1$par_dym(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$1$par_dym
 module top$late$lanes$1$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$1$par_dyn
+module top$late$lanes$1$s_last_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -10615,7 +13430,41 @@ module top$late$lanes$1$par_dyn(d,q,clock);
        q <= d;
     end
           
-endmodule // top$late$lanes$1$par_dyn
+endmodule // top$late$lanes$1$s_last_r
+module top$late$lanes$1$slab_hi(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$1$slab_hi
+module top$late$lanes$1$slab_lo(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$1$slab_lo
 module top$late$lanes$1$sr_q(d,q,clock);
     
     // Module arguments
@@ -10633,6 +13482,40 @@ module top$late$lanes$1$sr_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$1$sr_q
+module top$late$lanes$1$x_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$x_first_r
+module top$late$lanes$1$x_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$x_last_r
 module top$late$lanes$1$x_q(d,q,clock);
     
     // Module arguments
@@ -10650,6 +13533,57 @@ module top$late$lanes$1$x_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$1$x_q
+module top$late$lanes$1$xc_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$xc_r
+module top$late$lanes$1$y_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$y_first_r
+module top$late$lanes$1$y_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$y_last_r
 module top$late$lanes$1$y_q(d,q,clock);
     
     // Module arguments
@@ -10684,7 +13618,7 @@ module top$late$lanes$1$z_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$1$z_q
-module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,c_n_s,c_n_beam,c_n_b,n_s,n_beam,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -10703,9 +13637,11 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
+    input wire  [15:0] c_n_s;
+    input wire  [15:0] c_n_beam;
+    input wire  [15:0] c_n_b;
     input wire  [15:0] n_s;
     input wire  [15:0] n_beam;
-    input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
     input wire  [15:0] load_address;
@@ -10746,6 +13682,9 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx$d;
+    wire  [15:0] nx$q;
+    reg  nx$clock;
     reg  [15:0] nx_last$d;
     wire  [15:0] nx_last$q;
     reg  nx_last$clock;
@@ -10758,6 +13697,15 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [15:0] border$d;
     wire  [15:0] border$q;
     reg  border$clock;
+    reg  [15:0] b_u$d;
+    wire  [15:0] b_u$q;
+    reg  b_u$clock;
+    reg  [15:0] slab_lo$d;
+    wire  [15:0] slab_lo$q;
+    reg  slab_lo$clock;
+    reg  [15:0] slab_hi$d;
+    wire  [15:0] slab_hi$q;
+    reg  slab_hi$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -10806,6 +13754,12 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  halo_q$d;
     wire  halo_q$q;
     reg  halo_q$clock;
+    reg  [15:0] xc_r$d;
+    wire  [15:0] xc_r$q;
+    reg  xc_r$clock;
+    reg  pad_r$d;
+    wire  pad_r$q;
+    reg  pad_r$clock;
     reg  [15:0] a_u$d;
     wire  [15:0] a_u$q;
     reg  a_u$clock;
@@ -10836,6 +13790,36 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [31:0] addr$d;
     wire  [31:0] addr$q;
     reg  addr$clock;
+    reg  x_last_r$d;
+    wire  x_last_r$q;
+    reg  x_last_r$clock;
+    reg  x_first_r$d;
+    wire  x_first_r$q;
+    reg  x_first_r$clock;
+    reg  y_last_r$d;
+    wire  y_last_r$q;
+    reg  y_last_r$clock;
+    reg  y_first_r$d;
+    wire  y_first_r$q;
+    reg  y_first_r$clock;
+    reg  s_last_r$d;
+    wire  s_last_r$q;
+    reg  s_last_r$clock;
+    reg  [15:0] bx_at_r$d;
+    wire  [15:0] bx_at_r$q;
+    reg  bx_at_r$clock;
+    reg  [15:0] bx_far_r$d;
+    wire  [15:0] bx_far_r$q;
+    reg  bx_far_r$clock;
+    reg  [15:0] b_near_r$d;
+    wire  [15:0] b_near_r$q;
+    reg  b_near_r$clock;
+    reg  [15:0] by_at_r$d;
+    wire  [15:0] by_at_r$q;
+    reg  by_at_r$clock;
+    reg  [15:0] by_far_r$d;
+    wire  [15:0] by_far_r$q;
+    reg  by_far_r$clock;
     reg  [15:0] x_q$d;
     wire  [15:0] x_q$q;
     reg  x_q$clock;
@@ -10874,15 +13858,11 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  by_q$clock;
     
     // Local signals
-    reg  [15:0] nx;
     reg  [15:0] z0;
     reg  [15:0] z1;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [15:0] b_u;
-    reg  [15:0] slab_lo;
-    reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
     reg  dxn;
@@ -10894,11 +13874,12 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  dx_neg_nz;
     reg  dy_pos;
     reg  dy_neg_nz;
+    reg  [15:0] c_xc;
     reg  [15:0] xc;
     reg  [15:0] a_xc;
     reg  is_pad;
     reg  [2:0] face_c;
-    reg  [15:0] depth;
+    reg  [15:0] c_depth;
     reg  [15:0] bx;
     reg  [15:0] by;
     
@@ -10911,6 +13892,11 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$2$nx nx(
+        .d(nx$d),
+        .q(nx$q),
+        .clock(nx$clock)
     );
     top$late$lanes$2$nx_last nx_last(
         .d(nx_last$d),
@@ -10931,6 +13917,21 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .d(border$d),
         .q(border$q),
         .clock(border$clock)
+    );
+    top$late$lanes$2$b_u b_u(
+        .d(b_u$d),
+        .q(b_u$q),
+        .clock(b_u$clock)
+    );
+    top$late$lanes$2$slab_lo slab_lo(
+        .d(slab_lo$d),
+        .q(slab_lo$q),
+        .clock(slab_lo$clock)
+    );
+    top$late$lanes$2$slab_hi slab_hi(
+        .d(slab_hi$d),
+        .q(slab_hi$q),
+        .clock(slab_hi$clock)
     );
     top$late$lanes$2$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -10992,6 +13993,16 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .q(halo_q$q),
         .clock(halo_q$clock)
     );
+    top$late$lanes$2$xc_r xc_r(
+        .d(xc_r$d),
+        .q(xc_r$q),
+        .clock(xc_r$clock)
+    );
+    top$late$lanes$2$pad_r pad_r(
+        .d(pad_r$d),
+        .q(pad_r$q),
+        .clock(pad_r$clock)
+    );
     top$late$lanes$2$a_u a_u(
         .d(a_u$d),
         .q(a_u$q),
@@ -11041,6 +14052,56 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .d(addr$d),
         .q(addr$q),
         .clock(addr$clock)
+    );
+    top$late$lanes$2$x_last_r x_last_r(
+        .d(x_last_r$d),
+        .q(x_last_r$q),
+        .clock(x_last_r$clock)
+    );
+    top$late$lanes$2$x_first_r x_first_r(
+        .d(x_first_r$d),
+        .q(x_first_r$q),
+        .clock(x_first_r$clock)
+    );
+    top$late$lanes$2$y_last_r y_last_r(
+        .d(y_last_r$d),
+        .q(y_last_r$q),
+        .clock(y_last_r$clock)
+    );
+    top$late$lanes$2$y_first_r y_first_r(
+        .d(y_first_r$d),
+        .q(y_first_r$q),
+        .clock(y_first_r$clock)
+    );
+    top$late$lanes$2$s_last_r s_last_r(
+        .d(s_last_r$d),
+        .q(s_last_r$q),
+        .clock(s_last_r$clock)
+    );
+    top$late$lanes$2$bx_at_r bx_at_r(
+        .d(bx_at_r$d),
+        .q(bx_at_r$q),
+        .clock(bx_at_r$clock)
+    );
+    top$late$lanes$2$bx_far_r bx_far_r(
+        .d(bx_far_r$d),
+        .q(bx_far_r$q),
+        .clock(bx_far_r$clock)
+    );
+    top$late$lanes$2$b_near_r b_near_r(
+        .d(b_near_r$d),
+        .q(b_near_r$q),
+        .clock(b_near_r$clock)
+    );
+    top$late$lanes$2$by_at_r by_at_r(
+        .d(by_at_r$d),
+        .q(by_at_r$q),
+        .clock(by_at_r$clock)
+    );
+    top$late$lanes$2$by_far_r by_far_r(
+        .d(by_far_r$d),
+        .q(by_far_r$q),
+        .clock(by_far_r$clock)
     );
     top$late$lanes$2$x_q x_q(
         .d(x_q$d),
@@ -11134,6 +14195,22 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        xc_r$clock = clock;
+        pad_r$clock = clock;
+        x_last_r$clock = clock;
+        x_first_r$clock = clock;
+        y_last_r$clock = clock;
+        y_first_r$clock = clock;
+        s_last_r$clock = clock;
+        bx_at_r$clock = clock;
+        bx_far_r$clock = clock;
+        b_near_r$clock = clock;
+        by_at_r$clock = clock;
+        by_far_r$clock = clock;
+        nx$clock = clock;
+        b_u$clock = clock;
+        slab_lo$clock = clock;
+        slab_hi$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -11172,6 +14249,22 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        xc_r$d = xc_r$q;
+        pad_r$d = pad_r$q;
+        x_last_r$d = x_last_r$q;
+        x_first_r$d = x_first_r$q;
+        y_last_r$d = y_last_r$q;
+        y_first_r$d = y_first_r$q;
+        s_last_r$d = s_last_r$q;
+        bx_at_r$d = bx_at_r$q;
+        bx_far_r$d = bx_far_r$q;
+        b_near_r$d = b_near_r$q;
+        by_at_r$d = by_at_r$q;
+        by_far_r$d = by_far_r$q;
+        nx$d = nx$q;
+        b_u$d = b_u$q;
+        slab_lo$d = slab_lo$q;
+        slab_hi$d = slab_hi$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -11182,7 +14275,7 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
-        nx = dims[('h0)+:(16)];
+        nx$d = dims[('h0)+:(16)];
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         nz_last$d = dims[('h20)+:(16)] - 'h1;
@@ -11192,9 +14285,9 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
-        b_u = address_reg[('h0)+:(16)];
-        slab_lo = address_reg[('h10)+:(16)];
-        slab_hi = address_reg[('h20)+:(16)];
+        b_u$d = address_reg[('h0)+:(16)];
+        slab_lo$d = address_reg[('h10)+:(16)];
+        slab_hi$d = address_reg[('h20)+:(16)];
         dx_abs = dx;
         if (dx['h3f]) begin
             dx_abs = 'h0 - dx;
@@ -11215,7 +14308,7 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         memory$write_address = load_address;
         memory$write_data = load_data;
         a_xc = (a_n_b << p_shift) | ((lane - a_n_beam - a_n_s) & p_mask);
-        a_pad$d = a_xc >= nx;
+        a_pad$d = a_xc >= nx$q;
         a_u$d = a_xc;
         if (u_from == 'h1) begin
             a_u$d = a_n_beam;
@@ -11238,9 +14331,9 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u;
-        m_w_lo$d = a_w$q * slab_lo;
-        m_w_hi$d = a_w$q * slab_hi;
+        m_v$d = a_v$q * b_u$q;
+        m_w_lo$d = a_w$q * slab_lo$q;
+        m_w_hi$d = a_w$q * slab_hi$q;
         m_pad$d = a_pad$q;
         addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
         if (m_pad$q) begin
@@ -11248,8 +14341,22 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         end
         memory$read_address = 16'(addr$q);
         ext_addr = addr$q;
-        xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
-        is_pad = xc >= nx;
+        c_xc = (c_n_b << p_shift) | ((lane - c_n_beam - c_n_s) & p_mask);
+        xc_r$d = c_xc;
+        pad_r$d = c_xc >= nx$q;
+        xc = xc_r$q;
+        is_pad = pad_r$q;
+        c_depth = z1 - c_n_s;
+        x_last_r$d = c_xc == nx_last$q;
+        x_first_r$d = c_xc == 'h0;
+        y_last_r$d = c_n_beam == ny_last$q;
+        y_first_r$d = c_n_beam == 'h0;
+        s_last_r$d = c_n_s == z1;
+        bx_at_r$d = border$q + c_xc;
+        bx_far_r$d = border$q + c_xc + c_depth;
+        b_near_r$d = border$q - c_depth;
+        by_at_r$d = border$q + c_n_beam;
+        by_far_r$d = border$q + c_n_beam + c_depth;
         div$clock = clock;
         div$n_s = d_n_s;
         div$n_beam = d_n_beam;
@@ -11284,29 +14391,28 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             dyn_ = 1'b0;
         end
         face_c = 'h0;
-        depth = z1 - n_s;
-        bx = border$q + xc;
-        by = border$q + n_beam;
-        if ((xc == nx_last$q) & dx_pos) begin
+        bx = bx_at_r$q;
+        by = by_at_r$q;
+        if (x_last_r$q & dx_pos) begin
             face_c = 'h2;
-            bx = border$q + xc + depth;
+            bx = bx_far_r$q;
         end
-        else if ((xc == 'h0) & dx_neg_nz) begin
+        else if (x_first_r$q & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border$q - depth;
+            bx = b_near_r$q;
         end
-        else if ((n_beam == ny_last$q) & dy_pos) begin
+        else if (y_last_r$q & dy_pos) begin
             face_c = 'h4;
-            by = border$q + n_beam + depth;
+            by = by_far_r$q;
         end
-        else if ((n_beam == 'h0) & dy_neg_nz) begin
+        else if (y_first_r$q & dy_neg_nz) begin
             face_c = 'h5;
-            by = border$q - depth;
+            by = b_near_r$q;
         end
-        if (n_s == z1) begin
+        if (s_last_r$q) begin
             face_c = 'h1;
-            bx = border$q + xc;
-            by = border$q + n_beam;
+            bx = bx_at_r$q;
+            by = by_at_r$q;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -11322,7 +14428,7 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
+        edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -11480,7 +14586,7 @@ module top$late$lanes$2$addr_q2(d,q,clock);
     end
           
 endmodule // top$late$lanes$2$addr_q2
-module top$late$lanes$2$border(d,q,clock);
+module top$late$lanes$2$b_near_r(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -11496,7 +14602,75 @@ module top$late$lanes$2$border(d,q,clock);
        q <= d;
     end
           
+endmodule // top$late$lanes$2$b_near_r
+module top$late$lanes$2$b_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$2$b_u
+module top$late$lanes$2$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$late$lanes$2$border
+module top$late$lanes$2$bx_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$bx_at_r
+module top$late$lanes$2$bx_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$bx_far_r
 module top$late$lanes$2$bx_q(d,q,clock);
     
     // Module arguments
@@ -11514,6 +14688,40 @@ module top$late$lanes$2$bx_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$2$bx_q
+module top$late$lanes$2$by_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$by_at_r
+module top$late$lanes$2$by_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$by_far_r
 module top$late$lanes$2$by_q(d,q,clock);
     
     // Module arguments
@@ -11794,6 +15002,23 @@ module top$late$lanes$2$memory(read_address,read_clock,read_data,write_address,w
        end
     end
 endmodule // top$late$lanes$2$memory
+module top$late$lanes$2$nx(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$2$nx
 module top$late$lanes$2$nx_last(d,q,clock);
     
     // Module arguments
@@ -11806,10 +15031,10 @@ module top$late$lanes$2$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$2$nx_last
 module top$late$lanes$2$ny_last(d,q,clock);
     
@@ -11823,10 +15048,10 @@ module top$late$lanes$2$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$2$ny_last
 module top$late$lanes$2$nz_last(d,q,clock);
     
@@ -11840,10 +15065,10 @@ module top$late$lanes$2$nz_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$2$nz_last
 module top$late$lanes$2$pad_q(d,q,clock);
     
@@ -11862,7 +15087,7 @@ module top$late$lanes$2$pad_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$2$pad_q
-module top$late$lanes$2$par_dx_pos(d,q,clock);
+module top$late$lanes$2$pad_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -11878,6 +15103,23 @@ module top$late$lanes$2$par_dx_pos(d,q,clock);
        q <= d;
     end
           
+endmodule // top$late$lanes$2$pad_r
+module top$late$lanes$2$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$late$lanes$2$par_dx_pos
 module top$late$lanes$2$par_dxm(d,q,clock);
     
@@ -11891,10 +15133,10 @@ module top$late$lanes$2$par_dxm(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$2$par_dxm
 module top$late$lanes$2$par_dxn(d,q,clock);
     
@@ -11908,10 +15150,10 @@ module top$late$lanes$2$par_dxn(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$2$par_dxn
 module top$late$lanes$2$par_dy_pos(d,q,clock);
     
@@ -11925,10 +15167,10 @@ module top$late$lanes$2$par_dy_pos(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$2$par_dy_pos
 module top$late$lanes$2$par_dym(d,q,clock);
     
@@ -11942,12 +15184,29 @@ module top$late$lanes$2$par_dym(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$2$par_dym
 module top$late$lanes$2$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$2$par_dyn
+module top$late$lanes$2$s_last_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -11963,7 +15222,41 @@ module top$late$lanes$2$par_dyn(d,q,clock);
        q <= d;
     end
           
-endmodule // top$late$lanes$2$par_dyn
+endmodule // top$late$lanes$2$s_last_r
+module top$late$lanes$2$slab_hi(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$2$slab_hi
+module top$late$lanes$2$slab_lo(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$2$slab_lo
 module top$late$lanes$2$sr_q(d,q,clock);
     
     // Module arguments
@@ -11981,6 +15274,40 @@ module top$late$lanes$2$sr_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$2$sr_q
+module top$late$lanes$2$x_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$x_first_r
+module top$late$lanes$2$x_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$x_last_r
 module top$late$lanes$2$x_q(d,q,clock);
     
     // Module arguments
@@ -11998,6 +15325,57 @@ module top$late$lanes$2$x_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$2$x_q
+module top$late$lanes$2$xc_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$xc_r
+module top$late$lanes$2$y_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$y_first_r
+module top$late$lanes$2$y_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$y_last_r
 module top$late$lanes$2$y_q(d,q,clock);
     
     // Module arguments
@@ -12032,7 +15410,7 @@ module top$late$lanes$2$z_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$2$z_q
-module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,n_s,n_beam,n_b,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,d_n_s,d_n_beam,d_n_b,a_n_s,a_n_beam,a_n_b,c_n_s,c_n_beam,c_n_b,n_s,n_beam,load_enable,load_module,load_address,load_data,ext_addr,ext_data,value,x,y,z,address,pad,sr,er,at_edge,face,base_x,base_y,halo,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
     
     // Module arguments
     input wire  clock;
@@ -12051,9 +15429,11 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     input wire  [15:0] a_n_s;
     input wire  [15:0] a_n_beam;
     input wire  [15:0] a_n_b;
+    input wire  [15:0] c_n_s;
+    input wire  [15:0] c_n_beam;
+    input wire  [15:0] c_n_b;
     input wire  [15:0] n_s;
     input wire  [15:0] n_beam;
-    input wire  [15:0] n_b;
     input wire  load_enable;
     input wire  [7:0] load_module;
     input wire  [15:0] load_address;
@@ -12094,6 +15474,9 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [15:0] nx$d;
+    wire  [15:0] nx$q;
+    reg  nx$clock;
     reg  [15:0] nx_last$d;
     wire  [15:0] nx_last$q;
     reg  nx_last$clock;
@@ -12106,6 +15489,15 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [15:0] border$d;
     wire  [15:0] border$q;
     reg  border$clock;
+    reg  [15:0] b_u$d;
+    wire  [15:0] b_u$q;
+    reg  b_u$clock;
+    reg  [15:0] slab_lo$d;
+    wire  [15:0] slab_lo$q;
+    reg  slab_lo$clock;
+    reg  [15:0] slab_hi$d;
+    wire  [15:0] slab_hi$q;
+    reg  slab_hi$clock;
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
@@ -12154,6 +15546,12 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  halo_q$d;
     wire  halo_q$q;
     reg  halo_q$clock;
+    reg  [15:0] xc_r$d;
+    wire  [15:0] xc_r$q;
+    reg  xc_r$clock;
+    reg  pad_r$d;
+    wire  pad_r$q;
+    reg  pad_r$clock;
     reg  [15:0] a_u$d;
     wire  [15:0] a_u$q;
     reg  a_u$clock;
@@ -12184,6 +15582,36 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [31:0] addr$d;
     wire  [31:0] addr$q;
     reg  addr$clock;
+    reg  x_last_r$d;
+    wire  x_last_r$q;
+    reg  x_last_r$clock;
+    reg  x_first_r$d;
+    wire  x_first_r$q;
+    reg  x_first_r$clock;
+    reg  y_last_r$d;
+    wire  y_last_r$q;
+    reg  y_last_r$clock;
+    reg  y_first_r$d;
+    wire  y_first_r$q;
+    reg  y_first_r$clock;
+    reg  s_last_r$d;
+    wire  s_last_r$q;
+    reg  s_last_r$clock;
+    reg  [15:0] bx_at_r$d;
+    wire  [15:0] bx_at_r$q;
+    reg  bx_at_r$clock;
+    reg  [15:0] bx_far_r$d;
+    wire  [15:0] bx_far_r$q;
+    reg  bx_far_r$clock;
+    reg  [15:0] b_near_r$d;
+    wire  [15:0] b_near_r$q;
+    reg  b_near_r$clock;
+    reg  [15:0] by_at_r$d;
+    wire  [15:0] by_at_r$q;
+    reg  by_at_r$clock;
+    reg  [15:0] by_far_r$d;
+    wire  [15:0] by_far_r$q;
+    reg  by_far_r$clock;
     reg  [15:0] x_q$d;
     wire  [15:0] x_q$q;
     reg  x_q$clock;
@@ -12222,15 +15650,11 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  by_q$clock;
     
     // Local signals
-    reg  [15:0] nx;
     reg  [15:0] z0;
     reg  [15:0] z1;
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [15:0] b_u;
-    reg  [15:0] slab_lo;
-    reg  [15:0] slab_hi;
     reg  [63:0] dx_abs;
     reg  [63:0] dy_abs;
     reg  dxn;
@@ -12242,11 +15666,12 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  dx_neg_nz;
     reg  dy_pos;
     reg  dy_neg_nz;
+    reg  [15:0] c_xc;
     reg  [15:0] xc;
     reg  [15:0] a_xc;
     reg  is_pad;
     reg  [2:0] face_c;
-    reg  [15:0] depth;
+    reg  [15:0] c_depth;
     reg  [15:0] bx;
     reg  [15:0] by;
     
@@ -12259,6 +15684,11 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$3$nx nx(
+        .d(nx$d),
+        .q(nx$q),
+        .clock(nx$clock)
     );
     top$late$lanes$3$nx_last nx_last(
         .d(nx_last$d),
@@ -12279,6 +15709,21 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .d(border$d),
         .q(border$q),
         .clock(border$clock)
+    );
+    top$late$lanes$3$b_u b_u(
+        .d(b_u$d),
+        .q(b_u$q),
+        .clock(b_u$clock)
+    );
+    top$late$lanes$3$slab_lo slab_lo(
+        .d(slab_lo$d),
+        .q(slab_lo$q),
+        .clock(slab_lo$clock)
+    );
+    top$late$lanes$3$slab_hi slab_hi(
+        .d(slab_hi$d),
+        .q(slab_hi$q),
+        .clock(slab_hi$clock)
     );
     top$late$lanes$3$par_dxn par_dxn(
         .d(par_dxn$d),
@@ -12340,6 +15785,16 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .q(halo_q$q),
         .clock(halo_q$clock)
     );
+    top$late$lanes$3$xc_r xc_r(
+        .d(xc_r$d),
+        .q(xc_r$q),
+        .clock(xc_r$clock)
+    );
+    top$late$lanes$3$pad_r pad_r(
+        .d(pad_r$d),
+        .q(pad_r$q),
+        .clock(pad_r$clock)
+    );
     top$late$lanes$3$a_u a_u(
         .d(a_u$d),
         .q(a_u$q),
@@ -12389,6 +15844,56 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .d(addr$d),
         .q(addr$q),
         .clock(addr$clock)
+    );
+    top$late$lanes$3$x_last_r x_last_r(
+        .d(x_last_r$d),
+        .q(x_last_r$q),
+        .clock(x_last_r$clock)
+    );
+    top$late$lanes$3$x_first_r x_first_r(
+        .d(x_first_r$d),
+        .q(x_first_r$q),
+        .clock(x_first_r$clock)
+    );
+    top$late$lanes$3$y_last_r y_last_r(
+        .d(y_last_r$d),
+        .q(y_last_r$q),
+        .clock(y_last_r$clock)
+    );
+    top$late$lanes$3$y_first_r y_first_r(
+        .d(y_first_r$d),
+        .q(y_first_r$q),
+        .clock(y_first_r$clock)
+    );
+    top$late$lanes$3$s_last_r s_last_r(
+        .d(s_last_r$d),
+        .q(s_last_r$q),
+        .clock(s_last_r$clock)
+    );
+    top$late$lanes$3$bx_at_r bx_at_r(
+        .d(bx_at_r$d),
+        .q(bx_at_r$q),
+        .clock(bx_at_r$clock)
+    );
+    top$late$lanes$3$bx_far_r bx_far_r(
+        .d(bx_far_r$d),
+        .q(bx_far_r$q),
+        .clock(bx_far_r$clock)
+    );
+    top$late$lanes$3$b_near_r b_near_r(
+        .d(b_near_r$d),
+        .q(b_near_r$q),
+        .clock(b_near_r$clock)
+    );
+    top$late$lanes$3$by_at_r by_at_r(
+        .d(by_at_r$d),
+        .q(by_at_r$q),
+        .clock(by_at_r$clock)
+    );
+    top$late$lanes$3$by_far_r by_far_r(
+        .d(by_far_r$d),
+        .q(by_far_r$q),
+        .clock(by_far_r$clock)
     );
     top$late$lanes$3$x_q x_q(
         .d(x_q$d),
@@ -12482,6 +15987,22 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
+        xc_r$clock = clock;
+        pad_r$clock = clock;
+        x_last_r$clock = clock;
+        x_first_r$clock = clock;
+        y_last_r$clock = clock;
+        y_first_r$clock = clock;
+        s_last_r$clock = clock;
+        bx_at_r$clock = clock;
+        bx_far_r$clock = clock;
+        b_near_r$clock = clock;
+        by_at_r$clock = clock;
+        by_far_r$clock = clock;
+        nx$clock = clock;
+        b_u$clock = clock;
+        slab_lo$clock = clock;
+        slab_hi$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -12520,6 +16041,22 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
+        xc_r$d = xc_r$q;
+        pad_r$d = pad_r$q;
+        x_last_r$d = x_last_r$q;
+        x_first_r$d = x_first_r$q;
+        y_last_r$d = y_last_r$q;
+        y_first_r$d = y_first_r$q;
+        s_last_r$d = s_last_r$q;
+        bx_at_r$d = bx_at_r$q;
+        bx_far_r$d = bx_far_r$q;
+        b_near_r$d = b_near_r$q;
+        by_at_r$d = by_at_r$q;
+        by_far_r$d = by_far_r$q;
+        nx$d = nx$q;
+        b_u$d = b_u$q;
+        slab_lo$d = slab_lo$q;
+        slab_hi$d = slab_hi$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -12530,7 +16067,7 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
-        nx = dims[('h0)+:(16)];
+        nx$d = dims[('h0)+:(16)];
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
         nz_last$d = dims[('h20)+:(16)] - 'h1;
@@ -12540,9 +16077,9 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         u_from = axes[('h0)+:(2)];
         v_from = axes[('h2)+:(2)];
         w_from = axes[('h4)+:(2)];
-        b_u = address_reg[('h0)+:(16)];
-        slab_lo = address_reg[('h10)+:(16)];
-        slab_hi = address_reg[('h20)+:(16)];
+        b_u$d = address_reg[('h0)+:(16)];
+        slab_lo$d = address_reg[('h10)+:(16)];
+        slab_hi$d = address_reg[('h20)+:(16)];
         dx_abs = dx;
         if (dx['h3f]) begin
             dx_abs = 'h0 - dx;
@@ -12563,7 +16100,7 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         memory$write_address = load_address;
         memory$write_data = load_data;
         a_xc = (a_n_b << p_shift) | ((lane - a_n_beam - a_n_s) & p_mask);
-        a_pad$d = a_xc >= nx;
+        a_pad$d = a_xc >= nx$q;
         a_u$d = a_xc;
         if (u_from == 'h1) begin
             a_u$d = a_n_beam;
@@ -12586,9 +16123,9 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u;
-        m_w_lo$d = a_w$q * slab_lo;
-        m_w_hi$d = a_w$q * slab_hi;
+        m_v$d = a_v$q * b_u$q;
+        m_w_lo$d = a_w$q * slab_lo$q;
+        m_w_hi$d = a_w$q * slab_hi$q;
         m_pad$d = a_pad$q;
         addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
         if (m_pad$q) begin
@@ -12596,8 +16133,22 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         end
         memory$read_address = 16'(addr$q);
         ext_addr = addr$q;
-        xc = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
-        is_pad = xc >= nx;
+        c_xc = (c_n_b << p_shift) | ((lane - c_n_beam - c_n_s) & p_mask);
+        xc_r$d = c_xc;
+        pad_r$d = c_xc >= nx$q;
+        xc = xc_r$q;
+        is_pad = pad_r$q;
+        c_depth = z1 - c_n_s;
+        x_last_r$d = c_xc == nx_last$q;
+        x_first_r$d = c_xc == 'h0;
+        y_last_r$d = c_n_beam == ny_last$q;
+        y_first_r$d = c_n_beam == 'h0;
+        s_last_r$d = c_n_s == z1;
+        bx_at_r$d = border$q + c_xc;
+        bx_far_r$d = border$q + c_xc + c_depth;
+        b_near_r$d = border$q - c_depth;
+        by_at_r$d = border$q + c_n_beam;
+        by_far_r$d = border$q + c_n_beam + c_depth;
         div$clock = clock;
         div$n_s = d_n_s;
         div$n_beam = d_n_beam;
@@ -12632,29 +16183,28 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             dyn_ = 1'b0;
         end
         face_c = 'h0;
-        depth = z1 - n_s;
-        bx = border$q + xc;
-        by = border$q + n_beam;
-        if ((xc == nx_last$q) & dx_pos) begin
+        bx = bx_at_r$q;
+        by = by_at_r$q;
+        if (x_last_r$q & dx_pos) begin
             face_c = 'h2;
-            bx = border$q + xc + depth;
+            bx = bx_far_r$q;
         end
-        else if ((xc == 'h0) & dx_neg_nz) begin
+        else if (x_first_r$q & dx_neg_nz) begin
             face_c = 'h3;
-            bx = border$q - depth;
+            bx = b_near_r$q;
         end
-        else if ((n_beam == ny_last$q) & dy_pos) begin
+        else if (y_last_r$q & dy_pos) begin
             face_c = 'h4;
-            by = border$q + n_beam + depth;
+            by = by_far_r$q;
         end
-        else if ((n_beam == 'h0) & dy_neg_nz) begin
+        else if (y_first_r$q & dy_neg_nz) begin
             face_c = 'h5;
-            by = border$q - depth;
+            by = b_near_r$q;
         end
-        if (n_s == z1) begin
+        if (s_last_r$q) begin
             face_c = 'h1;
-            bx = border$q + xc;
-            by = border$q + n_beam;
+            bx = bx_at_r$q;
+            by = by_at_r$q;
         end
         if (is_pad | inval) begin
             face_c = 'h0;
@@ -12670,7 +16220,7 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         addr_q2$d = addr_q$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
-        edge_q$d = is_pad | (xc == 'h0) | (n_beam == 'h0) | (n_s == 'h0) | (xc == nx_last$q) | (n_beam == ny_last$q) | (n_s == nz_last$q);
+        edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
         face_q$d = face_c;
         bx_q$d = bx;
         by_q$d = by;
@@ -12828,7 +16378,7 @@ module top$late$lanes$3$addr_q2(d,q,clock);
     end
           
 endmodule // top$late$lanes$3$addr_q2
-module top$late$lanes$3$border(d,q,clock);
+module top$late$lanes$3$b_near_r(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -12844,7 +16394,75 @@ module top$late$lanes$3$border(d,q,clock);
        q <= d;
     end
           
+endmodule // top$late$lanes$3$b_near_r
+module top$late$lanes$3$b_u(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$3$b_u
+module top$late$lanes$3$border(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$late$lanes$3$border
+module top$late$lanes$3$bx_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$bx_at_r
+module top$late$lanes$3$bx_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$bx_far_r
 module top$late$lanes$3$bx_q(d,q,clock);
     
     // Module arguments
@@ -12862,6 +16480,40 @@ module top$late$lanes$3$bx_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$3$bx_q
+module top$late$lanes$3$by_at_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$by_at_r
+module top$late$lanes$3$by_far_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$by_far_r
 module top$late$lanes$3$by_q(d,q,clock);
     
     // Module arguments
@@ -13142,6 +16794,23 @@ module top$late$lanes$3$memory(read_address,read_clock,read_data,write_address,w
        end
     end
 endmodule // top$late$lanes$3$memory
+module top$late$lanes$3$nx(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$3$nx
 module top$late$lanes$3$nx_last(d,q,clock);
     
     // Module arguments
@@ -13154,10 +16823,10 @@ module top$late$lanes$3$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$3$nx_last
 module top$late$lanes$3$ny_last(d,q,clock);
     
@@ -13171,10 +16840,10 @@ module top$late$lanes$3$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$3$ny_last
 module top$late$lanes$3$nz_last(d,q,clock);
     
@@ -13188,10 +16857,10 @@ module top$late$lanes$3$nz_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$3$nz_last
 module top$late$lanes$3$pad_q(d,q,clock);
     
@@ -13210,7 +16879,7 @@ module top$late$lanes$3$pad_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$3$pad_q
-module top$late$lanes$3$par_dx_pos(d,q,clock);
+module top$late$lanes$3$pad_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13226,6 +16895,23 @@ module top$late$lanes$3$par_dx_pos(d,q,clock);
        q <= d;
     end
           
+endmodule // top$late$lanes$3$pad_r
+module top$late$lanes$3$par_dx_pos(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
 endmodule // top$late$lanes$3$par_dx_pos
 module top$late$lanes$3$par_dxm(d,q,clock);
     
@@ -13239,10 +16925,10 @@ module top$late$lanes$3$par_dxm(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$3$par_dxm
 module top$late$lanes$3$par_dxn(d,q,clock);
     
@@ -13256,10 +16942,10 @@ module top$late$lanes$3$par_dxn(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$3$par_dxn
 module top$late$lanes$3$par_dy_pos(d,q,clock);
     
@@ -13273,10 +16959,10 @@ module top$late$lanes$3$par_dy_pos(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$3$par_dy_pos
 module top$late$lanes$3$par_dym(d,q,clock);
     
@@ -13290,12 +16976,29 @@ module top$late$lanes$3$par_dym(d,q,clock);
        q = 'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$late$lanes$3$par_dym
 module top$late$lanes$3$par_dyn(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$3$par_dyn
+module top$late$lanes$3$s_last_r(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -13311,7 +17014,41 @@ module top$late$lanes$3$par_dyn(d,q,clock);
        q <= d;
     end
           
-endmodule // top$late$lanes$3$par_dyn
+endmodule // top$late$lanes$3$s_last_r
+module top$late$lanes$3$slab_hi(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$3$slab_hi
+module top$late$lanes$3$slab_lo(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$3$slab_lo
 module top$late$lanes$3$sr_q(d,q,clock);
     
     // Module arguments
@@ -13329,6 +17066,40 @@ module top$late$lanes$3$sr_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$3$sr_q
+module top$late$lanes$3$x_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$x_first_r
+module top$late$lanes$3$x_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$x_last_r
 module top$late$lanes$3$x_q(d,q,clock);
     
     // Module arguments
@@ -13346,6 +17117,57 @@ module top$late$lanes$3$x_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$3$x_q
+module top$late$lanes$3$xc_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$xc_r
+module top$late$lanes$3$y_first_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$y_first_r
+module top$late$lanes$3$y_last_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$y_last_r
 module top$late$lanes$3$y_q(d,q,clock);
     
     // Module arguments
@@ -13465,6 +17287,23 @@ module top$late$nb_d4(d,q,clock);
     end
           
 endmodule // top$late$nb_d4
+module top$late$nb_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$nb_end
 module top$late$nb_left(d,q,clock);
     
     // Module arguments
@@ -13584,6 +17423,23 @@ module top$late$nbeam_d4(d,q,clock);
     end
           
 endmodule // top$late$nbeam_d4
+module top$late$nbeam_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$nbeam_end
 module top$late$nbeam_left(d,q,clock);
     
     // Module arguments
@@ -13703,6 +17559,23 @@ module top$late$ns_d4(d,q,clock);
     end
           
 endmodule // top$late$ns_d4
+module top$late$ns_end(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$ns_end
 module top$late$ns_left(d,q,clock);
     
     // Module arguments
@@ -13754,6 +17627,23 @@ module top$late$ny_last(d,q,clock);
     end
           
 endmodule // top$late$ny_last
+module top$late$ny_last_zero(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$ny_last_zero
 module top$late$run_d1(d,q,clock);
     
     // Module arguments

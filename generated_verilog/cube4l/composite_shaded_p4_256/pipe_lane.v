@@ -4986,10 +4986,10 @@ module top$lanes$0$ctl$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$ctl$nx_last
 module top$lanes$0$ctl$ny_last(d,q,clock);
     
@@ -5003,10 +5003,10 @@ module top$lanes$0$ctl$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$ctl$ny_last
 module top$lanes$0$ctl$pad_q$0(d,q,clock);
     
@@ -11382,10 +11382,10 @@ module top$lanes$1$ctl$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$ctl$nx_last
 module top$lanes$1$ctl$ny_last(d,q,clock);
     
@@ -11399,10 +11399,10 @@ module top$lanes$1$ctl$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$ctl$ny_last
 module top$lanes$1$ctl$pad_q$0(d,q,clock);
     
@@ -17778,10 +17778,10 @@ module top$lanes$2$ctl$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$ctl$nx_last
 module top$lanes$2$ctl$ny_last(d,q,clock);
     
@@ -17795,10 +17795,10 @@ module top$lanes$2$ctl$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$ctl$ny_last
 module top$lanes$2$ctl$pad_q$0(d,q,clock);
     
@@ -24174,10 +24174,10 @@ module top$lanes$3$ctl$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$ctl$nx_last
 module top$lanes$3$ctl$ny_last(d,q,clock);
     
@@ -24191,10 +24191,10 @@ module top$lanes$3$ctl$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$ctl$ny_last
 module top$lanes$3$ctl$pad_q$0(d,q,clock);
     

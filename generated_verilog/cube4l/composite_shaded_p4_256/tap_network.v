@@ -962,7 +962,7 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -989,6 +989,9 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -998,6 +1001,9 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -1037,6 +1043,11 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$0$taps$rows$beam0$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$0$taps$rows$beam0$short short(
         .d(short$d),
         .q(short$q),
@@ -1052,6 +1063,11 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$0$taps$rows$beam0$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -1061,22 +1077,27 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -1092,7 +1113,11 @@ module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -1119,10 +1144,10 @@ module top$lanes$0$taps$rows$beam0$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam0$bound
 module top$lanes$0$taps$rows$beam0$head(d,q,clock);
     
@@ -1153,10 +1178,10 @@ module top$lanes$0$taps$rows$beam0$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam0$is_one
 module top$lanes$0$taps$rows$beam0$is_short(d,q,clock);
     
@@ -1170,11 +1195,28 @@ module top$lanes$0$taps$rows$beam0$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam0$is_short
+module top$lanes$0$taps$rows$beam0$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$taps$rows$beam0$is_two
 module top$lanes$0$taps$rows$beam0$one(d,q,clock);
     
     // Module arguments
@@ -1223,13 +1265,15 @@ module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem_0_0[62:0];
+    reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -1239,7 +1283,7 @@ module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$0$taps$rows$beam0$ram
 module top$lanes$0$taps$rows$beam0$rd(d,q,clock);
@@ -1276,6 +1320,23 @@ module top$lanes$0$taps$rows$beam0$short(d,q,clock);
     end
           
 endmodule // top$lanes$0$taps$rows$beam0$short
+module top$lanes$0$taps$rows$beam0$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam0$two
 module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -1286,7 +1347,7 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -1313,6 +1374,9 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -1322,6 +1386,9 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -1361,6 +1428,11 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$0$taps$rows$beam1$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$0$taps$rows$beam1$short short(
         .d(short$d),
         .q(short$q),
@@ -1376,6 +1448,11 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$0$taps$rows$beam1$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -1385,22 +1462,27 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -1416,7 +1498,11 @@ module top$lanes$0$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -1443,10 +1529,10 @@ module top$lanes$0$taps$rows$beam1$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam1$bound
 module top$lanes$0$taps$rows$beam1$head(d,q,clock);
     
@@ -1477,10 +1563,10 @@ module top$lanes$0$taps$rows$beam1$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam1$is_one
 module top$lanes$0$taps$rows$beam1$is_short(d,q,clock);
     
@@ -1494,11 +1580,28 @@ module top$lanes$0$taps$rows$beam1$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam1$is_short
+module top$lanes$0$taps$rows$beam1$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$taps$rows$beam1$is_two
 module top$lanes$0$taps$rows$beam1$one(d,q,clock);
     
     // Module arguments
@@ -1547,13 +1650,15 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem_0_0[62:0];
+    reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -1563,7 +1668,7 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$0$taps$rows$beam1$ram
 module top$lanes$0$taps$rows$beam1$rd(d,q,clock);
@@ -1600,6 +1705,23 @@ module top$lanes$0$taps$rows$beam1$short(d,q,clock);
     end
           
 endmodule // top$lanes$0$taps$rows$beam1$short
+module top$lanes$0$taps$rows$beam1$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$beam1$two
 module top$lanes$0$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -1612,10 +1734,10 @@ module top$lanes$0$taps$rows$beam_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$beam_last
 module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
@@ -1627,7 +1749,7 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3faf;
+    localparam  longest_last = 16'h3fae;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -1654,6 +1776,9 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -1663,6 +1788,9 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -1702,6 +1830,11 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$0$taps$rows$ring$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$0$taps$rows$ring$short short(
         .d(short$d),
         .q(short$q),
@@ -1717,6 +1850,11 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$0$taps$rows$ring$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -1726,22 +1864,27 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -1757,7 +1900,11 @@ module top$lanes$0$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -1784,10 +1931,10 @@ module top$lanes$0$taps$rows$ring$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$ring$bound
 module top$lanes$0$taps$rows$ring$head(d,q,clock);
     
@@ -1818,10 +1965,10 @@ module top$lanes$0$taps$rows$ring$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$ring$is_one
 module top$lanes$0$taps$rows$ring$is_short(d,q,clock);
     
@@ -1835,11 +1982,28 @@ module top$lanes$0$taps$rows$ring$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$ring$is_short
+module top$lanes$0$taps$rows$ring$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$taps$rows$ring$is_two
 module top$lanes$0$taps$rows$ring$one(d,q,clock);
     
     // Module arguments
@@ -1887,40 +2051,41 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
-    reg [0:0] mem_0_0[16303:0];
-    reg [0:0] mem_0_1[16303:0];
-    reg [0:0] mem_0_2[16303:0];
-    reg [0:0] mem_0_3[16303:0];
-    reg [0:0] mem_0_4[16303:0];
-    reg [0:0] mem_0_5[16303:0];
-    reg [0:0] mem_0_6[16303:0];
-    reg [0:0] mem_0_7[16303:0];
-    reg [0:0] mem_0_8[16303:0];
-    reg [0:0] mem_0_9[16303:0];
-    reg [0:0] mem_0_10[16303:0];
-    reg [0:0] mem_0_11[16303:0];
-    reg [0:0] mem_0_12[16303:0];
-    reg [0:0] mem_0_13[16303:0];
-    reg [0:0] mem_0_14[16303:0];
-    reg [0:0] mem_0_15[16303:0];
-    reg [0:0] mem_0_16[16303:0];
-    reg [0:0] mem_0_17[16303:0];
-    reg [0:0] mem_0_18[16303:0];
-    reg [0:0] mem_0_19[16303:0];
-    reg [0:0] mem_0_20[16303:0];
-    reg [0:0] mem_0_21[16303:0];
-    reg [0:0] mem_0_22[16303:0];
-    reg [0:0] mem_0_23[16303:0];
-    reg [0:0] mem_0_24[16303:0];
-    reg [0:0] mem_0_25[16303:0];
-    reg [0:0] mem_0_26[16303:0];
-    reg [0:0] mem_0_27[16303:0];
-    reg [0:0] mem_0_28[16303:0];
-    reg [0:0] mem_0_29[16303:0];
-    reg [0:0] mem_0_30[16303:0];
-    reg [0:0] mem_0_31[16303:0];
+    reg [0:0] mem_0_0[16302:0];
+    reg [0:0] mem_0_1[16302:0];
+    reg [0:0] mem_0_2[16302:0];
+    reg [0:0] mem_0_3[16302:0];
+    reg [0:0] mem_0_4[16302:0];
+    reg [0:0] mem_0_5[16302:0];
+    reg [0:0] mem_0_6[16302:0];
+    reg [0:0] mem_0_7[16302:0];
+    reg [0:0] mem_0_8[16302:0];
+    reg [0:0] mem_0_9[16302:0];
+    reg [0:0] mem_0_10[16302:0];
+    reg [0:0] mem_0_11[16302:0];
+    reg [0:0] mem_0_12[16302:0];
+    reg [0:0] mem_0_13[16302:0];
+    reg [0:0] mem_0_14[16302:0];
+    reg [0:0] mem_0_15[16302:0];
+    reg [0:0] mem_0_16[16302:0];
+    reg [0:0] mem_0_17[16302:0];
+    reg [0:0] mem_0_18[16302:0];
+    reg [0:0] mem_0_19[16302:0];
+    reg [0:0] mem_0_20[16302:0];
+    reg [0:0] mem_0_21[16302:0];
+    reg [0:0] mem_0_22[16302:0];
+    reg [0:0] mem_0_23[16302:0];
+    reg [0:0] mem_0_24[16302:0];
+    reg [0:0] mem_0_25[16302:0];
+    reg [0:0] mem_0_26[16302:0];
+    reg [0:0] mem_0_27[16302:0];
+    reg [0:0] mem_0_28[16302:0];
+    reg [0:0] mem_0_29[16302:0];
+    reg [0:0] mem_0_30[16302:0];
+    reg [0:0] mem_0_31[16302:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -1956,6 +2121,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        rd_0[30:30] <= mem_0_30[read_address[13:0]];
        rd_0[31:31] <= mem_0_31[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -1996,7 +2162,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$0$taps$rows$ring$ram
 module top$lanes$0$taps$rows$ring$rd(d,q,clock);
@@ -2033,6 +2199,23 @@ module top$lanes$0$taps$rows$ring$short(d,q,clock);
     end
           
 endmodule // top$lanes$0$taps$rows$ring$short
+module top$lanes$0$taps$rows$ring$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$taps$rows$ring$two
 module top$lanes$0$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -2045,10 +2228,10 @@ module top$lanes$0$taps$rows$ring_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$taps$rows$ring_last
 module top$lanes$0$taps$rows$stage$0(d,q,clock);
     
@@ -4119,7 +4302,7 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -4146,6 +4329,9 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -4155,6 +4341,9 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -4194,6 +4383,11 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$1$taps$rows$beam0$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$1$taps$rows$beam0$short short(
         .d(short$d),
         .q(short$q),
@@ -4209,6 +4403,11 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$1$taps$rows$beam0$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -4218,22 +4417,27 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -4249,7 +4453,11 @@ module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -4276,10 +4484,10 @@ module top$lanes$1$taps$rows$beam0$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam0$bound
 module top$lanes$1$taps$rows$beam0$head(d,q,clock);
     
@@ -4310,10 +4518,10 @@ module top$lanes$1$taps$rows$beam0$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam0$is_one
 module top$lanes$1$taps$rows$beam0$is_short(d,q,clock);
     
@@ -4327,11 +4535,28 @@ module top$lanes$1$taps$rows$beam0$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam0$is_short
+module top$lanes$1$taps$rows$beam0$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$taps$rows$beam0$is_two
 module top$lanes$1$taps$rows$beam0$one(d,q,clock);
     
     // Module arguments
@@ -4380,13 +4605,15 @@ module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem_0_0[62:0];
+    reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -4396,7 +4623,7 @@ module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$1$taps$rows$beam0$ram
 module top$lanes$1$taps$rows$beam0$rd(d,q,clock);
@@ -4433,6 +4660,23 @@ module top$lanes$1$taps$rows$beam0$short(d,q,clock);
     end
           
 endmodule // top$lanes$1$taps$rows$beam0$short
+module top$lanes$1$taps$rows$beam0$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam0$two
 module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -4443,7 +4687,7 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -4470,6 +4714,9 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -4479,6 +4726,9 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -4518,6 +4768,11 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$1$taps$rows$beam1$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$1$taps$rows$beam1$short short(
         .d(short$d),
         .q(short$q),
@@ -4533,6 +4788,11 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$1$taps$rows$beam1$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -4542,22 +4802,27 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -4573,7 +4838,11 @@ module top$lanes$1$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -4600,10 +4869,10 @@ module top$lanes$1$taps$rows$beam1$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam1$bound
 module top$lanes$1$taps$rows$beam1$head(d,q,clock);
     
@@ -4634,10 +4903,10 @@ module top$lanes$1$taps$rows$beam1$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam1$is_one
 module top$lanes$1$taps$rows$beam1$is_short(d,q,clock);
     
@@ -4651,11 +4920,28 @@ module top$lanes$1$taps$rows$beam1$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam1$is_short
+module top$lanes$1$taps$rows$beam1$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$taps$rows$beam1$is_two
 module top$lanes$1$taps$rows$beam1$one(d,q,clock);
     
     // Module arguments
@@ -4704,13 +4990,15 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem_0_0[62:0];
+    reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -4720,7 +5008,7 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$1$taps$rows$beam1$ram
 module top$lanes$1$taps$rows$beam1$rd(d,q,clock);
@@ -4757,6 +5045,23 @@ module top$lanes$1$taps$rows$beam1$short(d,q,clock);
     end
           
 endmodule // top$lanes$1$taps$rows$beam1$short
+module top$lanes$1$taps$rows$beam1$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$beam1$two
 module top$lanes$1$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -4769,10 +5074,10 @@ module top$lanes$1$taps$rows$beam_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$beam_last
 module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
@@ -4784,7 +5089,7 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3faf;
+    localparam  longest_last = 16'h3fae;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -4811,6 +5116,9 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -4820,6 +5128,9 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -4859,6 +5170,11 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$1$taps$rows$ring$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$1$taps$rows$ring$short short(
         .d(short$d),
         .q(short$q),
@@ -4874,6 +5190,11 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$1$taps$rows$ring$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -4883,22 +5204,27 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -4914,7 +5240,11 @@ module top$lanes$1$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -4941,10 +5271,10 @@ module top$lanes$1$taps$rows$ring$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$ring$bound
 module top$lanes$1$taps$rows$ring$head(d,q,clock);
     
@@ -4975,10 +5305,10 @@ module top$lanes$1$taps$rows$ring$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$ring$is_one
 module top$lanes$1$taps$rows$ring$is_short(d,q,clock);
     
@@ -4992,11 +5322,28 @@ module top$lanes$1$taps$rows$ring$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$ring$is_short
+module top$lanes$1$taps$rows$ring$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$taps$rows$ring$is_two
 module top$lanes$1$taps$rows$ring$one(d,q,clock);
     
     // Module arguments
@@ -5044,40 +5391,41 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
-    reg [0:0] mem_0_0[16303:0];
-    reg [0:0] mem_0_1[16303:0];
-    reg [0:0] mem_0_2[16303:0];
-    reg [0:0] mem_0_3[16303:0];
-    reg [0:0] mem_0_4[16303:0];
-    reg [0:0] mem_0_5[16303:0];
-    reg [0:0] mem_0_6[16303:0];
-    reg [0:0] mem_0_7[16303:0];
-    reg [0:0] mem_0_8[16303:0];
-    reg [0:0] mem_0_9[16303:0];
-    reg [0:0] mem_0_10[16303:0];
-    reg [0:0] mem_0_11[16303:0];
-    reg [0:0] mem_0_12[16303:0];
-    reg [0:0] mem_0_13[16303:0];
-    reg [0:0] mem_0_14[16303:0];
-    reg [0:0] mem_0_15[16303:0];
-    reg [0:0] mem_0_16[16303:0];
-    reg [0:0] mem_0_17[16303:0];
-    reg [0:0] mem_0_18[16303:0];
-    reg [0:0] mem_0_19[16303:0];
-    reg [0:0] mem_0_20[16303:0];
-    reg [0:0] mem_0_21[16303:0];
-    reg [0:0] mem_0_22[16303:0];
-    reg [0:0] mem_0_23[16303:0];
-    reg [0:0] mem_0_24[16303:0];
-    reg [0:0] mem_0_25[16303:0];
-    reg [0:0] mem_0_26[16303:0];
-    reg [0:0] mem_0_27[16303:0];
-    reg [0:0] mem_0_28[16303:0];
-    reg [0:0] mem_0_29[16303:0];
-    reg [0:0] mem_0_30[16303:0];
-    reg [0:0] mem_0_31[16303:0];
+    reg [0:0] mem_0_0[16302:0];
+    reg [0:0] mem_0_1[16302:0];
+    reg [0:0] mem_0_2[16302:0];
+    reg [0:0] mem_0_3[16302:0];
+    reg [0:0] mem_0_4[16302:0];
+    reg [0:0] mem_0_5[16302:0];
+    reg [0:0] mem_0_6[16302:0];
+    reg [0:0] mem_0_7[16302:0];
+    reg [0:0] mem_0_8[16302:0];
+    reg [0:0] mem_0_9[16302:0];
+    reg [0:0] mem_0_10[16302:0];
+    reg [0:0] mem_0_11[16302:0];
+    reg [0:0] mem_0_12[16302:0];
+    reg [0:0] mem_0_13[16302:0];
+    reg [0:0] mem_0_14[16302:0];
+    reg [0:0] mem_0_15[16302:0];
+    reg [0:0] mem_0_16[16302:0];
+    reg [0:0] mem_0_17[16302:0];
+    reg [0:0] mem_0_18[16302:0];
+    reg [0:0] mem_0_19[16302:0];
+    reg [0:0] mem_0_20[16302:0];
+    reg [0:0] mem_0_21[16302:0];
+    reg [0:0] mem_0_22[16302:0];
+    reg [0:0] mem_0_23[16302:0];
+    reg [0:0] mem_0_24[16302:0];
+    reg [0:0] mem_0_25[16302:0];
+    reg [0:0] mem_0_26[16302:0];
+    reg [0:0] mem_0_27[16302:0];
+    reg [0:0] mem_0_28[16302:0];
+    reg [0:0] mem_0_29[16302:0];
+    reg [0:0] mem_0_30[16302:0];
+    reg [0:0] mem_0_31[16302:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -5113,6 +5461,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        rd_0[30:30] <= mem_0_30[read_address[13:0]];
        rd_0[31:31] <= mem_0_31[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -5153,7 +5502,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$1$taps$rows$ring$ram
 module top$lanes$1$taps$rows$ring$rd(d,q,clock);
@@ -5190,6 +5539,23 @@ module top$lanes$1$taps$rows$ring$short(d,q,clock);
     end
           
 endmodule // top$lanes$1$taps$rows$ring$short
+module top$lanes$1$taps$rows$ring$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$taps$rows$ring$two
 module top$lanes$1$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -5202,10 +5568,10 @@ module top$lanes$1$taps$rows$ring_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$taps$rows$ring_last
 module top$lanes$1$taps$rows$stage$0(d,q,clock);
     
@@ -7276,7 +7642,7 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -7303,6 +7669,9 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -7312,6 +7681,9 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -7351,6 +7723,11 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$2$taps$rows$beam0$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$2$taps$rows$beam0$short short(
         .d(short$d),
         .q(short$q),
@@ -7366,6 +7743,11 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$2$taps$rows$beam0$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -7375,22 +7757,27 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -7406,7 +7793,11 @@ module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -7433,10 +7824,10 @@ module top$lanes$2$taps$rows$beam0$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$taps$rows$beam0$bound
 module top$lanes$2$taps$rows$beam0$head(d,q,clock);
     
@@ -7467,10 +7858,10 @@ module top$lanes$2$taps$rows$beam0$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$taps$rows$beam0$is_one
 module top$lanes$2$taps$rows$beam0$is_short(d,q,clock);
     
@@ -7484,11 +7875,28 @@ module top$lanes$2$taps$rows$beam0$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$taps$rows$beam0$is_short
+module top$lanes$2$taps$rows$beam0$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$taps$rows$beam0$is_two
 module top$lanes$2$taps$rows$beam0$one(d,q,clock);
     
     // Module arguments
@@ -7537,13 +7945,15 @@ module top$lanes$2$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem_0_0[62:0];
+    reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -7553,7 +7963,7 @@ module top$lanes$2$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$2$taps$rows$beam0$ram
 module top$lanes$2$taps$rows$beam0$rd(d,q,clock);
@@ -7590,6 +8000,23 @@ module top$lanes$2$taps$rows$beam0$short(d,q,clock);
     end
           
 endmodule // top$lanes$2$taps$rows$beam0$short
+module top$lanes$2$taps$rows$beam0$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam0$two
 module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -7600,7 +8027,7 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -7627,6 +8054,9 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -7636,6 +8066,9 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -7675,6 +8108,11 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$2$taps$rows$beam1$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$2$taps$rows$beam1$short short(
         .d(short$d),
         .q(short$q),
@@ -7690,6 +8128,11 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$2$taps$rows$beam1$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -7699,22 +8142,27 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -7730,7 +8178,11 @@ module top$lanes$2$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -7757,10 +8209,10 @@ module top$lanes$2$taps$rows$beam1$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$taps$rows$beam1$bound
 module top$lanes$2$taps$rows$beam1$head(d,q,clock);
     
@@ -7791,10 +8243,10 @@ module top$lanes$2$taps$rows$beam1$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$taps$rows$beam1$is_one
 module top$lanes$2$taps$rows$beam1$is_short(d,q,clock);
     
@@ -7808,11 +8260,28 @@ module top$lanes$2$taps$rows$beam1$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$taps$rows$beam1$is_short
+module top$lanes$2$taps$rows$beam1$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$taps$rows$beam1$is_two
 module top$lanes$2$taps$rows$beam1$one(d,q,clock);
     
     // Module arguments
@@ -7861,13 +8330,15 @@ module top$lanes$2$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem_0_0[62:0];
+    reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -7877,7 +8348,7 @@ module top$lanes$2$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$2$taps$rows$beam1$ram
 module top$lanes$2$taps$rows$beam1$rd(d,q,clock);
@@ -7914,6 +8385,23 @@ module top$lanes$2$taps$rows$beam1$short(d,q,clock);
     end
           
 endmodule // top$lanes$2$taps$rows$beam1$short
+module top$lanes$2$taps$rows$beam1$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$beam1$two
 module top$lanes$2$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -7926,10 +8414,10 @@ module top$lanes$2$taps$rows$beam_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$taps$rows$beam_last
 module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
@@ -7941,7 +8429,7 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3faf;
+    localparam  longest_last = 16'h3fae;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -7968,6 +8456,9 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -7977,6 +8468,9 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -8016,6 +8510,11 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$2$taps$rows$ring$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$2$taps$rows$ring$short short(
         .d(short$d),
         .q(short$q),
@@ -8031,6 +8530,11 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$2$taps$rows$ring$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -8040,22 +8544,27 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -8071,7 +8580,11 @@ module top$lanes$2$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -8098,10 +8611,10 @@ module top$lanes$2$taps$rows$ring$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$taps$rows$ring$bound
 module top$lanes$2$taps$rows$ring$head(d,q,clock);
     
@@ -8132,10 +8645,10 @@ module top$lanes$2$taps$rows$ring$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$taps$rows$ring$is_one
 module top$lanes$2$taps$rows$ring$is_short(d,q,clock);
     
@@ -8149,11 +8662,28 @@ module top$lanes$2$taps$rows$ring$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$taps$rows$ring$is_short
+module top$lanes$2$taps$rows$ring$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$taps$rows$ring$is_two
 module top$lanes$2$taps$rows$ring$one(d,q,clock);
     
     // Module arguments
@@ -8201,40 +8731,41 @@ module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
-    reg [0:0] mem_0_0[16303:0];
-    reg [0:0] mem_0_1[16303:0];
-    reg [0:0] mem_0_2[16303:0];
-    reg [0:0] mem_0_3[16303:0];
-    reg [0:0] mem_0_4[16303:0];
-    reg [0:0] mem_0_5[16303:0];
-    reg [0:0] mem_0_6[16303:0];
-    reg [0:0] mem_0_7[16303:0];
-    reg [0:0] mem_0_8[16303:0];
-    reg [0:0] mem_0_9[16303:0];
-    reg [0:0] mem_0_10[16303:0];
-    reg [0:0] mem_0_11[16303:0];
-    reg [0:0] mem_0_12[16303:0];
-    reg [0:0] mem_0_13[16303:0];
-    reg [0:0] mem_0_14[16303:0];
-    reg [0:0] mem_0_15[16303:0];
-    reg [0:0] mem_0_16[16303:0];
-    reg [0:0] mem_0_17[16303:0];
-    reg [0:0] mem_0_18[16303:0];
-    reg [0:0] mem_0_19[16303:0];
-    reg [0:0] mem_0_20[16303:0];
-    reg [0:0] mem_0_21[16303:0];
-    reg [0:0] mem_0_22[16303:0];
-    reg [0:0] mem_0_23[16303:0];
-    reg [0:0] mem_0_24[16303:0];
-    reg [0:0] mem_0_25[16303:0];
-    reg [0:0] mem_0_26[16303:0];
-    reg [0:0] mem_0_27[16303:0];
-    reg [0:0] mem_0_28[16303:0];
-    reg [0:0] mem_0_29[16303:0];
-    reg [0:0] mem_0_30[16303:0];
-    reg [0:0] mem_0_31[16303:0];
+    reg [0:0] mem_0_0[16302:0];
+    reg [0:0] mem_0_1[16302:0];
+    reg [0:0] mem_0_2[16302:0];
+    reg [0:0] mem_0_3[16302:0];
+    reg [0:0] mem_0_4[16302:0];
+    reg [0:0] mem_0_5[16302:0];
+    reg [0:0] mem_0_6[16302:0];
+    reg [0:0] mem_0_7[16302:0];
+    reg [0:0] mem_0_8[16302:0];
+    reg [0:0] mem_0_9[16302:0];
+    reg [0:0] mem_0_10[16302:0];
+    reg [0:0] mem_0_11[16302:0];
+    reg [0:0] mem_0_12[16302:0];
+    reg [0:0] mem_0_13[16302:0];
+    reg [0:0] mem_0_14[16302:0];
+    reg [0:0] mem_0_15[16302:0];
+    reg [0:0] mem_0_16[16302:0];
+    reg [0:0] mem_0_17[16302:0];
+    reg [0:0] mem_0_18[16302:0];
+    reg [0:0] mem_0_19[16302:0];
+    reg [0:0] mem_0_20[16302:0];
+    reg [0:0] mem_0_21[16302:0];
+    reg [0:0] mem_0_22[16302:0];
+    reg [0:0] mem_0_23[16302:0];
+    reg [0:0] mem_0_24[16302:0];
+    reg [0:0] mem_0_25[16302:0];
+    reg [0:0] mem_0_26[16302:0];
+    reg [0:0] mem_0_27[16302:0];
+    reg [0:0] mem_0_28[16302:0];
+    reg [0:0] mem_0_29[16302:0];
+    reg [0:0] mem_0_30[16302:0];
+    reg [0:0] mem_0_31[16302:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -8270,6 +8801,7 @@ module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        rd_0[30:30] <= mem_0_30[read_address[13:0]];
        rd_0[31:31] <= mem_0_31[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -8310,7 +8842,7 @@ module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$2$taps$rows$ring$ram
 module top$lanes$2$taps$rows$ring$rd(d,q,clock);
@@ -8347,6 +8879,23 @@ module top$lanes$2$taps$rows$ring$short(d,q,clock);
     end
           
 endmodule // top$lanes$2$taps$rows$ring$short
+module top$lanes$2$taps$rows$ring$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$2$taps$rows$ring$two
 module top$lanes$2$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -8359,10 +8908,10 @@ module top$lanes$2$taps$rows$ring_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$taps$rows$ring_last
 module top$lanes$2$taps$rows$stage$0(d,q,clock);
     
@@ -10433,7 +10982,7 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -10460,6 +11009,9 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -10469,6 +11021,9 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -10508,6 +11063,11 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$3$taps$rows$beam0$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$3$taps$rows$beam0$short short(
         .d(short$d),
         .q(short$q),
@@ -10523,6 +11083,11 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$3$taps$rows$beam0$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -10532,22 +11097,27 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -10563,7 +11133,11 @@ module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -10590,10 +11164,10 @@ module top$lanes$3$taps$rows$beam0$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$taps$rows$beam0$bound
 module top$lanes$3$taps$rows$beam0$head(d,q,clock);
     
@@ -10624,10 +11198,10 @@ module top$lanes$3$taps$rows$beam0$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$taps$rows$beam0$is_one
 module top$lanes$3$taps$rows$beam0$is_short(d,q,clock);
     
@@ -10641,11 +11215,28 @@ module top$lanes$3$taps$rows$beam0$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$taps$rows$beam0$is_short
+module top$lanes$3$taps$rows$beam0$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$taps$rows$beam0$is_two
 module top$lanes$3$taps$rows$beam0$one(d,q,clock);
     
     // Module arguments
@@ -10694,13 +11285,15 @@ module top$lanes$3$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem_0_0[62:0];
+    reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -10710,7 +11303,7 @@ module top$lanes$3$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$3$taps$rows$beam0$ram
 module top$lanes$3$taps$rows$beam0$rd(d,q,clock);
@@ -10747,6 +11340,23 @@ module top$lanes$3$taps$rows$beam0$short(d,q,clock);
     end
           
 endmodule // top$lanes$3$taps$rows$beam0$short
+module top$lanes$3$taps$rows$beam0$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam0$two
 module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -10757,7 +11367,7 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3e;
+    localparam  longest_last = 16'h3d;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -10784,6 +11394,9 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -10793,6 +11406,9 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -10832,6 +11448,11 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$3$taps$rows$beam1$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$3$taps$rows$beam1$short short(
         .d(short$d),
         .q(short$q),
@@ -10847,6 +11468,11 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$3$taps$rows$beam1$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -10856,22 +11482,27 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -10887,7 +11518,11 @@ module top$lanes$3$taps$rows$beam1(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -10914,10 +11549,10 @@ module top$lanes$3$taps$rows$beam1$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$taps$rows$beam1$bound
 module top$lanes$3$taps$rows$beam1$head(d,q,clock);
     
@@ -10948,10 +11583,10 @@ module top$lanes$3$taps$rows$beam1$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$taps$rows$beam1$is_one
 module top$lanes$3$taps$rows$beam1$is_short(d,q,clock);
     
@@ -10965,11 +11600,28 @@ module top$lanes$3$taps$rows$beam1$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$taps$rows$beam1$is_short
+module top$lanes$3$taps$rows$beam1$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$taps$rows$beam1$is_two
 module top$lanes$3$taps$rows$beam1$one(d,q,clock);
     
     // Module arguments
@@ -11018,13 +11670,15 @@ module top$lanes$3$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
-    reg [31:0] mem_0_0[62:0];
+    reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[31:0] <= mem_0_0[read_address[5:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -11034,7 +11688,7 @@ module top$lanes$3$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$3$taps$rows$beam1$ram
 module top$lanes$3$taps$rows$beam1$rd(d,q,clock);
@@ -11071,6 +11725,23 @@ module top$lanes$3$taps$rows$beam1$short(d,q,clock);
     end
           
 endmodule // top$lanes$3$taps$rows$beam1$short
+module top$lanes$3$taps$rows$beam1$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$beam1$two
 module top$lanes$3$taps$rows$beam_last(d,q,clock);
     
     // Module arguments
@@ -11083,10 +11754,10 @@ module top$lanes$3$taps$rows$beam_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$taps$rows$beam_last
 module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     
@@ -11098,7 +11769,7 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     input wire  [15:0] last;
     
     // Constant declarations
-    localparam  longest_last = 16'h3faf;
+    localparam  longest_last = 16'h3fae;
     localparam  has_ring = 1'b1;
     localparam  mask = 64'hff00ff00ff00ff;
     
@@ -11125,6 +11796,9 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  [63:0] one$d;
     wire  [63:0] one$q;
     reg  one$clock;
+    reg  [63:0] two$d;
+    wire  [63:0] two$q;
+    reg  two$clock;
     reg  [63:0] short$d;
     wire  [63:0] short$q;
     reg  short$clock;
@@ -11134,6 +11808,9 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
     reg  is_one$d;
     wire  is_one$q;
     reg  is_one$clock;
+    reg  is_two$d;
+    wire  is_two$q;
+    reg  is_two$clock;
     
     // Local signals
     reg  [15:0] next;
@@ -11173,6 +11850,11 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(one$q),
         .clock(one$clock)
     );
+    top$lanes$3$taps$rows$ring$two two(
+        .d(two$d),
+        .q(two$q),
+        .clock(two$clock)
+    );
     top$lanes$3$taps$rows$ring$short short(
         .d(short$d),
         .q(short$q),
@@ -11188,6 +11870,11 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         .q(is_one$q),
         .clock(is_one$clock)
     );
+    top$lanes$3$taps$rows$ring$is_two is_two(
+        .d(is_two$d),
+        .q(is_two$q),
+        .clock(is_two$clock)
+    );
     
     // Update code
     reg  [63:0] data_out_pass;
@@ -11197,22 +11884,27 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         rd$clock = clock;
         ptr$clock = clock;
         one$clock = clock;
+        two$clock = clock;
         short$clock = clock;
         is_short$clock = clock;
         is_one$clock = clock;
+        is_two$clock = clock;
         bound$d = bound$q;
         head$d = head$q;
         rd$d = rd$q;
         ptr$d = ptr$q;
         one$d = one$q;
+        two$d = two$q;
         short$d = short$q;
         is_short$d = is_short$q;
         is_one$d = is_one$q;
+        is_two$d = is_two$q;
         ram$read_clock = clock;
         ram$write_clock = clock;
-        bound$d = last - 'h1;
-        is_short$d = last < 'h2;
+        bound$d = last - 'h2;
+        is_short$d = last < 'h3;
         is_one$d = last == 'h0;
+        is_two$d = last == 'h1;
         next = head$q + 'h1;
         if ((head$q >= bound$q) | (head$q >= longest_last)) begin
             next = 'h0;
@@ -11228,7 +11920,11 @@ module top$lanes$3$taps$rows$ring(clock,data_in,write_enable,data_out,last);
         if (write_enable) begin
             one$d = data_in & mask;
         end
-        short$d = one$q;
+        two$d = one$q;
+        short$d = two$q;
+        if (is_two$q) begin
+            short$d = one$q;
+        end
         if (is_one$q) begin
             short$d = short$q;
             if (write_enable) begin
@@ -11255,10 +11951,10 @@ module top$lanes$3$taps$rows$ring$bound(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$taps$rows$ring$bound
 module top$lanes$3$taps$rows$ring$head(d,q,clock);
     
@@ -11289,10 +11985,10 @@ module top$lanes$3$taps$rows$ring$is_one(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$taps$rows$ring$is_one
 module top$lanes$3$taps$rows$ring$is_short(d,q,clock);
     
@@ -11306,11 +12002,28 @@ module top$lanes$3$taps$rows$ring$is_short(d,q,clock);
        q = 1'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$taps$rows$ring$is_short
+module top$lanes$3$taps$rows$ring$is_two(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$taps$rows$ring$is_two
 module top$lanes$3$taps$rows$ring$one(d,q,clock);
     
     // Module arguments
@@ -11358,40 +12071,41 @@ module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
-    reg [0:0] mem_0_0[16303:0];
-    reg [0:0] mem_0_1[16303:0];
-    reg [0:0] mem_0_2[16303:0];
-    reg [0:0] mem_0_3[16303:0];
-    reg [0:0] mem_0_4[16303:0];
-    reg [0:0] mem_0_5[16303:0];
-    reg [0:0] mem_0_6[16303:0];
-    reg [0:0] mem_0_7[16303:0];
-    reg [0:0] mem_0_8[16303:0];
-    reg [0:0] mem_0_9[16303:0];
-    reg [0:0] mem_0_10[16303:0];
-    reg [0:0] mem_0_11[16303:0];
-    reg [0:0] mem_0_12[16303:0];
-    reg [0:0] mem_0_13[16303:0];
-    reg [0:0] mem_0_14[16303:0];
-    reg [0:0] mem_0_15[16303:0];
-    reg [0:0] mem_0_16[16303:0];
-    reg [0:0] mem_0_17[16303:0];
-    reg [0:0] mem_0_18[16303:0];
-    reg [0:0] mem_0_19[16303:0];
-    reg [0:0] mem_0_20[16303:0];
-    reg [0:0] mem_0_21[16303:0];
-    reg [0:0] mem_0_22[16303:0];
-    reg [0:0] mem_0_23[16303:0];
-    reg [0:0] mem_0_24[16303:0];
-    reg [0:0] mem_0_25[16303:0];
-    reg [0:0] mem_0_26[16303:0];
-    reg [0:0] mem_0_27[16303:0];
-    reg [0:0] mem_0_28[16303:0];
-    reg [0:0] mem_0_29[16303:0];
-    reg [0:0] mem_0_30[16303:0];
-    reg [0:0] mem_0_31[16303:0];
+    reg [0:0] mem_0_0[16302:0];
+    reg [0:0] mem_0_1[16302:0];
+    reg [0:0] mem_0_2[16302:0];
+    reg [0:0] mem_0_3[16302:0];
+    reg [0:0] mem_0_4[16302:0];
+    reg [0:0] mem_0_5[16302:0];
+    reg [0:0] mem_0_6[16302:0];
+    reg [0:0] mem_0_7[16302:0];
+    reg [0:0] mem_0_8[16302:0];
+    reg [0:0] mem_0_9[16302:0];
+    reg [0:0] mem_0_10[16302:0];
+    reg [0:0] mem_0_11[16302:0];
+    reg [0:0] mem_0_12[16302:0];
+    reg [0:0] mem_0_13[16302:0];
+    reg [0:0] mem_0_14[16302:0];
+    reg [0:0] mem_0_15[16302:0];
+    reg [0:0] mem_0_16[16302:0];
+    reg [0:0] mem_0_17[16302:0];
+    reg [0:0] mem_0_18[16302:0];
+    reg [0:0] mem_0_19[16302:0];
+    reg [0:0] mem_0_20[16302:0];
+    reg [0:0] mem_0_21[16302:0];
+    reg [0:0] mem_0_22[16302:0];
+    reg [0:0] mem_0_23[16302:0];
+    reg [0:0] mem_0_24[16302:0];
+    reg [0:0] mem_0_25[16302:0];
+    reg [0:0] mem_0_26[16302:0];
+    reg [0:0] mem_0_27[16302:0];
+    reg [0:0] mem_0_28[16302:0];
+    reg [0:0] mem_0_29[16302:0];
+    reg [0:0] mem_0_30[16302:0];
+    reg [0:0] mem_0_31[16302:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
+    reg [31:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -11427,6 +12141,7 @@ module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
        rd_0[30:30] <= mem_0_30[read_address[13:0]];
        rd_0[31:31] <= mem_0_31[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -11467,7 +12182,7 @@ module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[31:24], 8'd0, q_0[23:16], 8'd0, q_0[15:8], 8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[31:24], 8'd0, r_0[23:16], 8'd0, r_0[15:8], 8'd0, r_0[7:0]};
     end
 endmodule // top$lanes$3$taps$rows$ring$ram
 module top$lanes$3$taps$rows$ring$rd(d,q,clock);
@@ -11504,6 +12219,23 @@ module top$lanes$3$taps$rows$ring$short(d,q,clock);
     end
           
 endmodule // top$lanes$3$taps$rows$ring$short
+module top$lanes$3$taps$rows$ring$two(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$3$taps$rows$ring$two
 module top$lanes$3$taps$rows$ring_last(d,q,clock);
     
     // Module arguments
@@ -11516,10 +12248,10 @@ module top$lanes$3$taps$rows$ring_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$taps$rows$ring_last
 module top$lanes$3$taps$rows$stage$0(d,q,clock);
     

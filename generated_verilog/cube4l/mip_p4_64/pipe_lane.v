@@ -4986,10 +4986,10 @@ module top$lanes$0$ctl$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$ctl$nx_last
 module top$lanes$0$ctl$ny_last(d,q,clock);
     
@@ -5003,10 +5003,10 @@ module top$lanes$0$ctl$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$0$ctl$ny_last
 module top$lanes$0$ctl$pad_q$0(d,q,clock);
     
@@ -11357,10 +11357,10 @@ module top$lanes$1$ctl$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$ctl$nx_last
 module top$lanes$1$ctl$ny_last(d,q,clock);
     
@@ -11374,10 +11374,10 @@ module top$lanes$1$ctl$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$1$ctl$ny_last
 module top$lanes$1$ctl$pad_q$0(d,q,clock);
     
@@ -17728,10 +17728,10 @@ module top$lanes$2$ctl$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$ctl$nx_last
 module top$lanes$2$ctl$ny_last(d,q,clock);
     
@@ -17745,10 +17745,10 @@ module top$lanes$2$ctl$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$2$ctl$ny_last
 module top$lanes$2$ctl$pad_q$0(d,q,clock);
     
@@ -24099,10 +24099,10 @@ module top$lanes$3$ctl$nx_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$ctl$nx_last
 module top$lanes$3$ctl$ny_last(d,q,clock);
     
@@ -24116,10 +24116,10 @@ module top$lanes$3$ctl$ny_last(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
 endmodule // top$lanes$3$ctl$ny_last
 module top$lanes$3$ctl$pad_q$0(d,q,clock);
     

@@ -1,0 +1,66 @@
+//! A lane's own register of a value that holds for a frame: a view
+//! register's field, or a value derived from it one clock behind the
+//! register file (`docs/registers.md`: the lanes read such copies
+//! `ADDRESS_STAGES` clocks after a sweep starts at the earliest).
+//!
+//! Hand-written Verilog, a plain register but for `(* keep *)` on its
+//! always block: every lane's copy has the same D input, and yosys merges
+//! equal registers into one, which then drives all the lanes across the
+//! part (the shaded 256³ build's critical paths ran from such merged
+//! registers, their routing three quarters of the path). Kept apart, each
+//! copy is placed by its lane; only its D input, constant during a sweep,
+//! crosses the part.
+
+use rust_hdl::prelude::*;
+
+/// A register that synthesis keeps as its own, never merged with an equal one.
+#[derive(Clone, Debug, LogicBlock)]
+pub struct LaneCopy<T: Synth> {
+    pub d: Signal<In, T>,
+    pub q: Signal<Out, T>,
+    pub clock: Signal<In, Clock>,
+}
+
+impl<T: Synth> Default for LaneCopy<T> {
+    fn default() -> LaneCopy<T> {
+        LaneCopy {
+            d: Default::default(),
+            q: Default::default(),
+            clock: Default::default(),
+        }
+    }
+}
+
+impl<T: Synth> Logic for LaneCopy<T> {
+    fn update(&mut self) {
+        if self.clock.pos_edge() {
+            self.q.next = self.d.val();
+        }
+    }
+    fn connect(&mut self) {
+        self.q.connect();
+    }
+    fn hdl(&self) -> Verilog {
+        Verilog::Custom(format!(
+            "\
+initial begin
+   q = {:x};
+end
+
+(* keep *)
+always @(posedge clock) begin
+   q <= d;
+end
+",
+            T::default().verilog()
+        ))
+    }
+    fn timing(&self) -> Vec<TimingInfo> {
+        vec![TimingInfo {
+            name: "lane_copy".into(),
+            clock: "clock".into(),
+            inputs: vec!["d".into()],
+            outputs: vec!["q".into()],
+        }]
+    }
+}
