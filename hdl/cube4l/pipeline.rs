@@ -112,6 +112,10 @@ pub struct Pipeline<const P: usize, const A: usize, const H: usize> {
     /// rather than stored.
     late: Cfb<P, A>,
     late_wait: DFF<Bits<32>>,
+    /// `late_wait == 1`, registered from the count's next value: the late
+    /// CFB's start is a flip-flop, no 32-bit compare lies before its
+    /// counters' loads (the shaded build's critical path once).
+    late_go: DFF<Bit>,
     gradient: Constant<Bit>,
     /// Clocks left of the drain after a reset.
     flush: DFF<Bits<8>>,
@@ -228,6 +232,7 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
             lanes: *lanes,
             late: *late,
             late_wait: Default::default(),
+            late_go: Default::default(),
             gradient: Constant::new(config.gradient()),
             flush: Default::default(),
             flush_clocks: Constant::new(super::config::fill_clocks(config).to_bits()),
@@ -239,7 +244,7 @@ impl<const P: usize, const A: usize, const H: usize> Pipeline<P, A, H> {
 impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, late_wait, flush);
+        dff_setup!(self, clock, late_wait, late_go, flush);
         // The view registers, to both CFBs and every lane.
         self.view.clock.next = self.clock.val();
         self.view.host_write.next = self.host_write.val();
@@ -297,7 +302,8 @@ impl<const P: usize, const A: usize, const H: usize> Logic for Pipeline<P, A, H>
             self.late_wait.d.next = 0.into();
         }
         self.late.clock.next = self.clock.val();
-        self.late.start.next = self.late_wait.q.val() == 1;
+        self.late_go.d.next = self.late_wait.d.val() == 1;
+        self.late.start.next = self.late_go.q.val();
         self.late.load_enable.next = false;
         self.late.load_module.next = 0.into();
         self.late.load_address.next = 0.into();

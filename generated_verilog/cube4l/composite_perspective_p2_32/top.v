@@ -316,6 +316,9 @@ module top(clock,start,reset,load_enable,load_module,load_address,load_data,host
     reg  [31:0] late_wait$d;
     wire  [31:0] late_wait$q;
     reg  late_wait$clock;
+    reg  late_go$d;
+    wire  late_go$q;
+    reg  late_go$clock;
     reg  [7:0] flush$d;
     wire  [7:0] flush$q;
     reg  flush$clock;
@@ -547,6 +550,11 @@ module top(clock,start,reset,load_enable,load_module,load_address,load_data,host
         .q(late_wait$q),
         .clock(late_wait$clock)
     );
+    top$late_go late_go(
+        .d(late_go$d),
+        .q(late_go$q),
+        .clock(late_go$clock)
+    );
     top$flush flush(
         .d(flush$d),
         .q(flush$q),
@@ -556,8 +564,10 @@ module top(clock,start,reset,load_enable,load_module,load_address,load_data,host
     // Update code
     always @(*) begin
         late_wait$clock = clock;
+        late_go$clock = clock;
         flush$clock = clock;
         late_wait$d = late_wait$q;
+        late_go$d = late_go$q;
         flush$d = flush$q;
         view$clock = clock;
         view$host_write = host_write;
@@ -615,7 +625,8 @@ module top(clock,start,reset,load_enable,load_module,load_address,load_data,host
             late_wait$d = 'h0;
         end
         late$clock = clock;
-        late$start = late_wait$q == 'h1;
+        late_go$d = late_wait$d == 'h1;
+        late$start = late_go$q;
         late$load_enable = 1'b0;
         late$load_module = 'h0;
         late$load_address = 'h0;

@@ -25599,6 +25599,23 @@ module top$lanes$3$feed(clock,beats,beat_valid,value,x,y,pad,invalid,halo,sr,er,
     end
     
 endmodule // top$lanes$3$feed
+module top$late_go(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late_go
 module top$late_wait(d,q,clock);
     
     // Module arguments
