@@ -1,7 +1,8 @@
 //! A lane's own register of a value that holds for a frame: a view
-//! register's field, or a value derived from it one clock behind the
-//! register file (`docs/registers.md`: the lanes read such copies
-//! `ADDRESS_STAGES` clocks after a sweep starts at the earliest).
+//! register's field, or a value derived from such a copy a clock later
+//! (`docs/registers.md` says when the lanes first read them), or a
+//! datapath's own copy of an operand several datapaths share (the bilinear
+//! unit's weights, one copy a channel).
 //!
 //! Hand-written Verilog, a plain register but for `(* keep *)` on its
 //! always block: every lane's copy has the same D input, and yosys merges

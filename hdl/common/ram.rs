@@ -88,6 +88,18 @@ impl<D: Synth + std::ops::BitAnd<Output = D>, const N: usize> DepthRam<D, N> {
     /// (`REGMODE = "OUTREG"`), built in the fabric because yosys does not
     /// set it. `read_data` is the registered words through the bank
     /// selection (a multiplexer after the registers, none with one bank).
+    ///
+    /// A banked memory's users never read the word written in the same
+    /// clock (a [`super::banked_line::BankedLine`] reads one word ahead of
+    /// its write; the CFB's voxel memory is written by the host's loads
+    /// between sweeps, when no read is used), so its Verilog leaves a
+    /// collision undefined (`(* no_rw_check *)`): otherwise yosys builds a
+    /// bypass for it (the addresses compared, the written word registered,
+    /// a LUT between each block RAM and its register; 30 LUT4 and 24
+    /// flip-flops for four 16384x1 slices), and that shared compare pulled
+    /// the bank registers away from their block RAMs (the shaded 256³
+    /// build's path: a gradient line's DP16KD at row 82, its register at
+    /// row 7).
     pub fn bank_registers(mut self) -> Self {
         self._banked = true;
         self
@@ -325,7 +337,11 @@ end
         for b in 0..banks {
             let depth = bank_words.min(words - b * bank_words);
             for (j, &(lo, hi)) in slices.iter().enumerate() {
-                decl += &format!("{style}reg [{}:0] mem_{b}_{j}[{}:0];\n", hi - lo, depth - 1);
+                decl += &format!(
+                    "{style}(* no_rw_check *)\nreg [{}:0] mem_{b}_{j}[{}:0];\n",
+                    hi - lo,
+                    depth - 1
+                );
                 reads += &format!("   rd_{b}[{hi}:{lo}] <= mem_{b}_{j}[read_address{low}];\n");
             }
             decl += &format!("reg [{d}:0] rd_{b};\nreg [{d}:0] q_{b};\n");

@@ -6,8 +6,9 @@
 //! pipeline and emits it with its control `ADDRESS_STAGES + READ_STAGES`
 //! clocks after the counters issue it (the address pipeline: the skew and
 //! transform, the three stride products, their sum, each registered; then
-//! the block RAM's registered read and a register after it, so that the
-//! memory's clock-to-out reaches no logic), exactly as
+//! the block RAM's registered read, a register beside it and a relay
+//! register beside the lane, so that the memory's clock-to-out reaches no
+//! logic and no route across the part), exactly as
 //! `golden_model::cube4l::cfb::CfbStream`.
 //!
 //! Lane `k` holds `x = N_b*P + ((k - N_B - N_s) mod P)` of beam `N_B` in slice
@@ -111,7 +112,7 @@ pub struct Cfb<const P: usize, const A: usize> {
     e_nb: Signal<Local, Bits<16>>,
     /// The counters and `running` through the lanes' address pipeline
     /// (`ADDRESS_STAGES`, three clocks: `_d1` to `_d3`), then the RAM
-    /// read's clock (`_d4`) and its output register's (`_q`).
+    /// read's clocks (`_d4`, `_d5`) and its last register's (`_q`).
     run_d1: DFF<Bit>,
     run_d2: DFF<Bit>,
     run_d3: DFF<Bit>,
@@ -128,6 +129,10 @@ pub struct Cfb<const P: usize, const A: usize> {
     ns_d4: DFF<Bits<16>>,
     nbeam_d4: DFF<Bits<16>>,
     nb_d4: DFF<Bits<16>>,
+    run_d5: DFF<Bit>,
+    ns_d5: DFF<Bits<16>>,
+    nbeam_d5: DFF<Bits<16>>,
+    nb_d5: DFF<Bits<16>>,
     valid_q: DFF<Bit>,
     ns_q: DFF<Bits<16>>,
     nbeam_q: DFF<Bits<16>>,
@@ -234,6 +239,10 @@ impl<const P: usize, const A: usize> Cfb<P, A> {
             ns_d4: Default::default(),
             nbeam_d4: Default::default(),
             nb_d4: Default::default(),
+            run_d5: Default::default(),
+            ns_d5: Default::default(),
+            nbeam_d5: Default::default(),
+            nb_d5: Default::default(),
             valid_q: Default::default(),
             ns_q: Default::default(),
             nbeam_q: Default::default(),
@@ -286,6 +295,10 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
             nb_d2,
             nb_d3,
             nb_d4,
+            run_d5,
+            ns_d5,
+            nbeam_d5,
+            nb_d5,
             ny_last,
             b_last,
             nb_left,
@@ -329,6 +342,10 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
         self.ns_d4.d.next = self.ns_d3.q.val();
         self.nbeam_d4.d.next = self.nbeam_d3.q.val();
         self.nb_d4.d.next = self.nb_d3.q.val();
+        self.run_d5.d.next = self.run_d4.q.val();
+        self.ns_d5.d.next = self.ns_d4.q.val();
+        self.nbeam_d5.d.next = self.nbeam_d4.q.val();
+        self.nb_d5.d.next = self.nb_d4.q.val();
         // The slices streamed, the last beam, the last partial beam.
         self.z0.next = self.slices.val().get_bits::<16>(32);
         self.z1.next = self.slices.val().get_bits::<16>(48);
@@ -355,11 +372,11 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
             self.lanes[k].a_n_s.next = self.e_ns.val();
             self.lanes[k].a_n_beam.next = self.e_nbeam.val();
             self.lanes[k].a_n_b.next = self.e_nb.val();
-            self.lanes[k].c_n_s.next = self.ns_d3.q.val();
-            self.lanes[k].c_n_beam.next = self.nbeam_d3.q.val();
-            self.lanes[k].c_n_b.next = self.nb_d3.q.val();
-            self.lanes[k].n_s.next = self.ns_d4.q.val();
-            self.lanes[k].n_beam.next = self.nbeam_d4.q.val();
+            self.lanes[k].c_n_s.next = self.ns_d4.q.val();
+            self.lanes[k].c_n_beam.next = self.nbeam_d4.q.val();
+            self.lanes[k].c_n_b.next = self.nb_d4.q.val();
+            self.lanes[k].n_s.next = self.ns_d5.q.val();
+            self.lanes[k].n_beam.next = self.nbeam_d5.q.val();
             self.lanes[k].load_enable.next = self.load_enable.val();
             self.lanes[k].load_module.next = self.load_module.val();
             self.lanes[k].load_address.next = self.load_address.val();
@@ -430,10 +447,10 @@ impl<const P: usize, const A: usize> Logic for Cfb<P, A> {
         if self.reset.val() {
             self.running.d.next = false;
         }
-        self.valid_q.d.next = self.run_d4.q.val();
-        self.ns_q.d.next = self.ns_d4.q.val();
-        self.nbeam_q.d.next = self.nbeam_d4.q.val();
-        self.nb_q.d.next = self.nb_d4.q.val();
+        self.valid_q.d.next = self.run_d5.q.val();
+        self.ns_q.d.next = self.ns_d5.q.val();
+        self.nbeam_q.d.next = self.nbeam_d5.q.val();
+        self.nb_q.d.next = self.nb_d5.q.val();
         self.busy.next = self.running.q.val();
         if self.perspective.val() {
             self.busy.next = self.lead.busy.val();

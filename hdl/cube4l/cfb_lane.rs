@@ -30,8 +30,8 @@ pub struct CfbLane<const A: usize> {
     /// Shared counters N_s (slice z), N_B (beam y) and N_b (partial beam)
     /// as issued, for the perspective divider; for the address (the same,
     /// or `counter_lead::LEAD` clocks later with a divider); and
-    /// `ADDRESS_STAGES` clocks after the address's (`c_`), a clock ahead of
-    /// the control computed beside the memory read's output register, for
+    /// `ADDRESS_STAGES + 1` clocks after the address's (`c_`), a clock ahead
+    /// of the control computed beside the memory read's last register, for
     /// its skewed x and padding test; N_s and N_B a clock later, for the
     /// rest of the control.
     pub d_n_s: Signal<In, Bits<16>>,
@@ -85,11 +85,21 @@ pub struct CfbLane<const A: usize> {
     perspective: Constant<Bit>,
     external: Constant<Bit>,
     // The registers' fields.
-    /// `n_x`, and `n - 1` of each axis and the base plane's border `z1 -
-    /// z0`, registered from `Dims` and `Slices` as the increments are (the
-    /// lane's own copies, placed beside it): no subtraction from a view
-    /// register lies before the padding test, the exit-face compares and
-    /// the base-plane sums.
+    /// The fields the control derives its values from, copied as they are
+    /// (`Dims`' three sides, `Slices`' `z0` and `z1`, `Axes`, and `Dx`'s and
+    /// `Dy`'s sign and low 32 bits): the route from the register file
+    /// across the part ends in a register, and the arithmetic on them lies
+    /// beside the lane, a clock later.
+    view_dims: LaneCopy<Bits<48>>,
+    view_slices: LaneCopy<Bits<32>>,
+    view_axes: LaneCopy<Bits<6>>,
+    view_dx: LaneCopy<Bits<33>>,
+    view_dy: LaneCopy<Bits<33>>,
+    /// `n_x` (copied from `Dims`: the address's first stage reads it a clock
+    /// after the start), and, from the copies, `n - 1` of each axis and the
+    /// base plane's border `z1 - z0`: no subtraction from a view register
+    /// lies before the padding test, the exit-face compares and the
+    /// base-plane sums.
     nx: LaneCopy<Bits<16>>,
     nx_last: LaneCopy<Bits<16>>,
     ny_last: LaneCopy<Bits<16>>,
@@ -107,24 +117,25 @@ pub struct CfbLane<const A: usize> {
     b_u: LaneCopy<Bits<16>>,
     slab_lo: LaneCopy<Bits<16>>,
     slab_hi: LaneCopy<Bits<16>>,
-    dx_abs: Signal<Local, Bits<64>>,
-    dy_abs: Signal<Local, Bits<64>>,
-    /// The parallel view's increments, registered from `Dx` and `Dy`: they
-    /// hold for a frame, and the control reads them `ADDRESS_STAGES + 1` clocks
-    /// after the start at the earliest. Sign (when nonzero), magnitude, and
+    dx_abs: Signal<Local, Bits<32>>,
+    dy_abs: Signal<Local, Bits<32>>,
+    /// The parallel view's increments, registered from the copies of `Dx`
+    /// and `Dy` (two clocks behind the register file): they hold for a
+    /// frame, and the control reads them `ADDRESS_STAGES + 2` clocks after
+    /// the start at the earliest. Sign (when nonzero), magnitude, and
     /// positive-and-nonzero.
     par_dxn: LaneCopy<Bit>,
-    par_dxm: LaneCopy<Bits<32>>,
+    par_dxm: LaneCopy<Bits<16>>,
     par_dx_pos: LaneCopy<Bit>,
     par_dyn: LaneCopy<Bit>,
-    par_dym: LaneCopy<Bits<32>>,
+    par_dym: LaneCopy<Bits<16>>,
     par_dy_pos: LaneCopy<Bit>,
     /// Perspective views: the sight-ray increments, from the issued counters.
     div: Divider,
     dxn: Signal<Local, Bit>,
-    dxm: Signal<Local, Bits<32>>,
+    dxm: Signal<Local, Bits<16>>,
     dyn_: Signal<Local, Bit>,
-    dym: Signal<Local, Bits<32>>,
+    dym: Signal<Local, Bits<16>>,
     inval: Signal<Local, Bit>,
     dx_pos: Signal<Local, Bit>,
     dx_neg_nz: Signal<Local, Bit>,
@@ -182,10 +193,13 @@ pub struct CfbLane<const A: usize> {
     z_q: DFF<Bits<16>>,
     addr_q: DFF<Bits<32>>,
     addr_q2: DFF<Bits<32>>,
+    addr_q3: DFF<Bits<32>>,
     pad_q: DFF<Bit>,
-    /// The external port's word, registered: the memory module's own read
-    /// takes the same two clocks (a register at each of its block RAMs).
+    /// The external port's word, registered twice: the memory module's own
+    /// read takes the same three clocks (a register at each of its block
+    /// RAMs and a relay register beside the lane).
     ext_q: DFF<Bits<16>>,
+    ext_q2: DFF<Bits<16>>,
     sr_q: DFF<Bit>,
     edge_q: DFF<Bit>,
     face_q: DFF<Bits<3>>,
@@ -258,7 +272,7 @@ impl<const A: usize> CfbLane<A> {
                 if external {
                     m
                 } else {
-                    m.bank_registers()
+                    m.bank_registers().relay()
                 }
             },
             lane: Constant::new(bits16(k)),
@@ -266,6 +280,11 @@ impl<const A: usize> CfbLane<A> {
             p_shift: Constant::new((p.trailing_zeros() as u64).to_bits()),
             perspective: Constant::new(c.perspective),
             external: Constant::new(external),
+            view_dims: Default::default(),
+            view_slices: Default::default(),
+            view_axes: Default::default(),
+            view_dx: Default::default(),
+            view_dy: Default::default(),
             nx: Default::default(),
             nx_last: Default::default(),
             ny_last: Default::default(),
@@ -338,8 +357,10 @@ impl<const A: usize> CfbLane<A> {
             z_q: Default::default(),
             addr_q: Default::default(),
             addr_q2: Default::default(),
+            addr_q3: Default::default(),
             pad_q: Default::default(),
             ext_q: Default::default(),
+            ext_q2: Default::default(),
             sr_q: Default::default(),
             edge_q: Default::default(),
             face_q: Default::default(),
@@ -362,46 +383,107 @@ impl<const A: usize> Logic for CfbLane<A> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, x_q, y_q, z_q, addr_q, addr_q2, pad_q, ext_q, sr_q, edge_q, face_q, bx_q,
-            by_q, dxn_q, dxm_q, dyn_q, dym_q, inval_q, halo_q, a_u, a_v, a_w, a_pad, m_u, m_v,
-            m_w_lo, m_w_hi, m_pad, addr, xc_r, pad_r, x_last_r, x_first_r, y_last_r, y_first_r,
-            s_last_r, bx_at_r, bx_far_r, b_near_r, by_at_r, by_far_r, nx, b_u, slab_lo, slab_hi,
-            nx_last, ny_last, nz_last, border, par_dxn, par_dxm, par_dx_pos, par_dyn, par_dym,
+            self,
+            clock,
+            x_q,
+            y_q,
+            z_q,
+            addr_q,
+            addr_q2,
+            addr_q3,
+            pad_q,
+            ext_q,
+            ext_q2,
+            sr_q,
+            edge_q,
+            face_q,
+            bx_q,
+            by_q,
+            dxn_q,
+            dxm_q,
+            dyn_q,
+            dym_q,
+            inval_q,
+            halo_q,
+            a_u,
+            a_v,
+            a_w,
+            a_pad,
+            m_u,
+            m_v,
+            m_w_lo,
+            m_w_hi,
+            m_pad,
+            addr,
+            xc_r,
+            pad_r,
+            x_last_r,
+            x_first_r,
+            y_last_r,
+            y_first_r,
+            s_last_r,
+            bx_at_r,
+            bx_far_r,
+            b_near_r,
+            by_at_r,
+            by_far_r,
+            nx,
+            b_u,
+            slab_lo,
+            slab_hi,
+            view_dims,
+            view_slices,
+            view_axes,
+            view_dx,
+            view_dy,
+            nx_last,
+            ny_last,
+            nz_last,
+            border,
+            par_dxn,
+            par_dxm,
+            par_dx_pos,
+            par_dyn,
+            par_dym,
             par_dy_pos
         );
-        // The view registers' fields.
+        // The view registers' fields, copied beside the lane.
+        self.view_dims.d.next = self.dims.val().get_bits::<48>(0);
+        self.view_slices.d.next = self.slices.val().get_bits::<32>(0);
+        self.view_axes.d.next = self.axes.val().get_bits::<6>(0);
+        self.view_dx.d.next = bit_cast::<33, 32>(self.dx.val().get_bits::<32>(0))
+            | (bit_cast::<33, 1>(self.dx.val().get_bits::<1>(63)) << 32);
+        self.view_dy.d.next = bit_cast::<33, 32>(self.dy.val().get_bits::<32>(0))
+            | (bit_cast::<33, 1>(self.dy.val().get_bits::<1>(63)) << 32);
         self.nx.d.next = self.dims.val().get_bits::<16>(0);
-        self.nx_last.d.next = self.dims.val().get_bits::<16>(0) - 1;
-        self.ny_last.d.next = self.dims.val().get_bits::<16>(16) - 1;
-        self.nz_last.d.next = self.dims.val().get_bits::<16>(32) - 1;
-        self.z0.next = self.slices.val().get_bits::<16>(0);
-        self.z1.next = self.slices.val().get_bits::<16>(16);
-        self.border.d.next =
-            self.slices.val().get_bits::<16>(16) - self.slices.val().get_bits::<16>(0);
-        self.u_from.next = self.axes.val().get_bits::<2>(0);
-        self.v_from.next = self.axes.val().get_bits::<2>(2);
-        self.w_from.next = self.axes.val().get_bits::<2>(4);
+        self.nx_last.d.next = self.view_dims.q.val().get_bits::<16>(0) - 1;
+        self.ny_last.d.next = self.view_dims.q.val().get_bits::<16>(16) - 1;
+        self.nz_last.d.next = self.view_dims.q.val().get_bits::<16>(32) - 1;
+        self.z0.next = self.view_slices.q.val().get_bits::<16>(0);
+        self.z1.next = self.view_slices.q.val().get_bits::<16>(16);
+        self.border.d.next = self.z1.val() - self.z0.val();
+        self.u_from.next = self.view_axes.q.val().get_bits::<2>(0);
+        self.v_from.next = self.view_axes.q.val().get_bits::<2>(2);
+        self.w_from.next = self.view_axes.q.val().get_bits::<2>(4);
         self.b_u.d.next = self.address_reg.val().get_bits::<16>(0);
         self.slab_lo.d.next = self.address_reg.val().get_bits::<16>(16);
         self.slab_hi.d.next = self.address_reg.val().get_bits::<16>(32);
-        self.dx_abs.next = self.dx.val();
-        if self.dx.val().get_bit(63) {
-            self.dx_abs.next = 0 - self.dx.val();
+        // |Dx| and |Dy|: the low 32 bits of the negation need only the low
+        // 32 bits of the register.
+        self.dx_abs.next = self.view_dx.q.val().get_bits::<32>(0);
+        if self.view_dx.q.val().get_bit(32) {
+            self.dx_abs.next = 0 - self.view_dx.q.val().get_bits::<32>(0);
         }
-        self.dy_abs.next = self.dy.val();
-        if self.dy.val().get_bit(63) {
-            self.dy_abs.next = 0 - self.dy.val();
+        self.dy_abs.next = self.view_dy.q.val().get_bits::<32>(0);
+        if self.view_dy.q.val().get_bit(32) {
+            self.dy_abs.next = 0 - self.view_dy.q.val().get_bits::<32>(0);
         }
-        self.par_dxm.d.next = self.dx_abs.val().get_bits::<32>(0);
-        self.par_dxn.d.next =
-            self.dx.val().get_bit(63) & (self.dx_abs.val().get_bits::<32>(0) != 0);
-        self.par_dx_pos.d.next =
-            !self.dx.val().get_bit(63) & (self.dx_abs.val().get_bits::<32>(0) != 0);
-        self.par_dym.d.next = self.dy_abs.val().get_bits::<32>(0);
-        self.par_dyn.d.next =
-            self.dy.val().get_bit(63) & (self.dy_abs.val().get_bits::<32>(0) != 0);
-        self.par_dy_pos.d.next =
-            !self.dy.val().get_bit(63) & (self.dy_abs.val().get_bits::<32>(0) != 0);
+        self.par_dxm.d.next = bit_cast::<16, 32>(self.dx_abs.val());
+        self.par_dxn.d.next = self.view_dx.q.val().get_bit(32) & (self.dx_abs.val() != 0);
+        self.par_dx_pos.d.next = !self.view_dx.q.val().get_bit(32) & (self.dx_abs.val() != 0);
+        self.par_dym.d.next = bit_cast::<16, 32>(self.dy_abs.val());
+        self.par_dyn.d.next = self.view_dy.q.val().get_bit(32) & (self.dy_abs.val() != 0);
+        self.par_dy_pos.d.next = !self.view_dy.q.val().get_bit(32) & (self.dy_abs.val() != 0);
         self.memory.read_clock.next = self.clock.val();
         self.memory.write_clock.next = self.clock.val();
         self.memory.write_enable.next =
@@ -409,7 +491,7 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.memory.write_address.next = self.load_address.val();
         self.memory.write_data.next = self.load_data.val();
         // The address, in four clocks (`ADDRESS_STAGES` and the RAM's
-        // registered read; its output register makes five). 1: skew, the lane's x within the partial beam,
+        // registered read; its bank and relay registers make six). 1: skew, the lane's x within the partial beam,
         // and pipeline to dataset coordinates.
         self.a_xc.next = (self.a_n_b.val() << self.p_shift.val())
             | ((self.lane.val() - self.a_n_beam.val() - self.a_n_s.val()) & self.p_mask.val());
@@ -492,10 +574,10 @@ impl<const A: usize> Logic for CfbLane<A> {
             self.dxm.next = self.div.dx_mag.val();
             self.dym.next = self.div.dy_mag.val();
             self.inval.next = self.div.invalid.val();
-            self.dx_pos.next = !self.dxn.val() & (self.dxm.val() != 0);
-            self.dx_neg_nz.next = self.dxn.val() & (self.dxm.val() != 0);
-            self.dy_pos.next = !self.dyn_.val() & (self.dym.val() != 0);
-            self.dy_neg_nz.next = self.dyn_.val() & (self.dym.val() != 0);
+            self.dx_pos.next = self.div.dx_pos.val();
+            self.dx_neg_nz.next = self.div.dx_neg.val();
+            self.dy_pos.next = self.div.dy_pos.val();
+            self.dy_neg_nz.next = self.div.dy_neg.val();
         }
         if self.is_pad.val() {
             self.dxm.next = 0.into();
@@ -537,6 +619,7 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.z_q.d.next = self.n_s.val();
         self.addr_q.d.next = self.addr.q.val();
         self.addr_q2.d.next = self.addr_q.q.val();
+        self.addr_q3.d.next = self.addr_q2.q.val();
         self.pad_q.d.next = self.is_pad.val();
         self.sr_q.d.next = self.n_s.val() == self.z0.val();
         self.edge_q.d.next = self.is_pad.val()
@@ -550,17 +633,18 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.bx_q.d.next = self.bx.val();
         self.by_q.d.next = self.by.val();
         self.dxn_q.d.next = self.dxn.val();
-        self.dxm_q.d.next = bit_cast::<16, 32>(self.dxm.val());
+        self.dxm_q.d.next = self.dxm.val();
         self.dyn_q.d.next = self.dyn_.val();
-        self.dym_q.d.next = bit_cast::<16, 32>(self.dym.val());
+        self.dym_q.d.next = self.dym.val();
         self.inval_q.d.next = self.inval.val() | self.is_pad.val();
         self.halo_q.d.next =
             (self.n_s.val() + 1 <= self.z0.val()) | (self.n_s.val() > self.z1.val());
         // Outputs: registered control beside the RAM's registered read.
         self.ext_q.d.next = self.ext_data.val();
+        self.ext_q2.d.next = self.ext_q.q.val();
         self.value.next = self.memory.read_data.val();
         if self.external.val() {
-            self.value.next = self.ext_q.q.val();
+            self.value.next = self.ext_q2.q.val();
         }
         if self.pad_q.q.val() {
             self.value.next = 0.into();
@@ -568,7 +652,7 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.x.next = self.x_q.q.val();
         self.y.next = self.y_q.q.val();
         self.z.next = self.z_q.q.val();
-        self.address.next = self.addr_q2.q.val();
+        self.address.next = self.addr_q3.q.val();
         self.pad.next = self.pad_q.q.val();
         self.sr.next = self.sr_q.q.val();
         self.er.next = self.face_q.q.val() != 0;

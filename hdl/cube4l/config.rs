@@ -366,8 +366,10 @@ const _: () = assert!(shader::LATENCY > bilinear::LATENCY);
 pub const ADDRESS_STAGES: usize = 3;
 
 /// Clocks from the CFB's registered address to its voxel on the lanes: the
-/// block RAM's registered read and the register after it.
-pub const READ_STAGES: usize = 2;
+/// block RAM's registered read, the register beside it and a relay register
+/// beside the lane (`DepthRam::relay`; for external memory, the word's
+/// registers after its one-clock read).
+pub const READ_STAGES: usize = 3;
 
 /// Clocks of a sweep beyond one beat per clock: the start register, the
 /// CFB's address stages, the block-RAM read and its output register, the

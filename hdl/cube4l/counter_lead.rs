@@ -6,14 +6,14 @@
 //! for the counters and the running bit, which a reset clears. Only
 //! perspective builds instantiate it.
 
-use super::config::ADDRESS_STAGES;
+use super::config::{ADDRESS_STAGES, READ_STAGES};
 use super::divider;
 use rust_hdl::prelude::*;
 
 /// Clocks from issue to the address pipeline: the divider's latency less
-/// the address stages and the clock the control is computed in beside the
-/// memory's read.
-pub const LEAD: usize = divider::LATENCY - ADDRESS_STAGES - 1;
+/// the address stages and the memory read's clocks before the one the
+/// control is computed in, beside the read's last register.
+pub const LEAD: usize = divider::LATENCY - ADDRESS_STAGES - (READ_STAGES - 1);
 // `hdl_gen` needs literal loop bounds: `update` is written for 18 stages.
 const _: () = assert!(LEAD == 18, "update the literals in CounterLead");
 

@@ -17,7 +17,11 @@
 //!    quotient of 2^17 or more, far beyond the 45-degree limit of 2^f);
 //! 6. at clock 22, *invalid* (`S_z = 0`, an overflow, or `|dx|` or `|dy|`
 //!    above 1.0), and an invalid voxel's saturated direction
-//!    `sign(S_x) * sign(S_z)`.
+//!    `sign(S_x) * sign(S_z)`;
+//! 7. at clock 23, the same in a relay register: the result's register
+//!    lies beside the division stages, the relay beside the lane's control,
+//!    which reads it (the route between them was the perspective build's
+//!    critical path).
 //!
 //! The CFB issues the divider's counters [`LATENCY`] clocks before the
 //! control that reads its result (`super::counter_lead`). Only perspective
@@ -28,10 +32,10 @@ use crate::common::bits16;
 use rust_hdl::prelude::*;
 
 /// Clocks from the counters to the registered increments.
-pub const LATENCY: usize = 22;
+pub const LATENCY: usize = 23;
 // `hdl_gen` needs literal loop bounds: `update` is written for 17 division
-// stages behind 4 front stages and before the result's register.
-const _: () = assert!(LATENCY == 4 + 17 + 1, "update the literals in Divider");
+// stages behind 4 front stages and before the result's two registers.
+const _: () = assert!(LATENCY == 4 + 17 + 2, "update the literals in Divider");
 
 // The flags carried through the division stages, by bit (literals in
 // `update`, which `hdl_gen` needs): 0 and 1, `S_x / S_z` (`S_y / S_z`) is
@@ -51,11 +55,14 @@ pub struct Divider {
     pub eye_y: Signal<In, Bits<64>>,
     pub eye_z: Signal<In, Bits<64>>,
     /// The increments of the voxel whose counters came [`LATENCY`] clocks
-    /// earlier: sign (only when nonzero) and magnitude, and *invalid*.
+    /// earlier: sign (only when nonzero) and magnitude (at most 1.0, in
+    /// the CFB's 16-bit increments), positive (and nonzero), and *invalid*.
     pub dx_neg: Signal<Out, Bit>,
-    pub dx_mag: Signal<Out, Bits<32>>,
+    pub dx_mag: Signal<Out, Bits<16>>,
+    pub dx_pos: Signal<Out, Bit>,
     pub dy_neg: Signal<Out, Bit>,
-    pub dy_mag: Signal<Out, Bits<32>>,
+    pub dy_mag: Signal<Out, Bits<16>>,
+    pub dy_pos: Signal<Out, Bit>,
     pub invalid: Signal<Out, Bit>,
     lane: Constant<Bits<16>>,
     p_mask: Constant<Bits<16>>,
@@ -97,10 +104,20 @@ pub struct Divider {
     dym: Signal<Local, Bits<32>>,
     flags: Signal<Local, Bits<7>>,
     dxn_q: DFF<Bit>,
-    dxm_q: DFF<Bits<32>>,
+    dxm_q: DFF<Bits<16>>,
     dyn_q: DFF<Bit>,
-    dym_q: DFF<Bits<32>>,
+    dym_q: DFF<Bits<16>>,
     inval_q: DFF<Bit>,
+    dxp_q: DFF<Bit>,
+    dyp_q: DFF<Bit>,
+    // 23: the relay.
+    dxn_r: DFF<Bit>,
+    dxm_r: DFF<Bits<16>>,
+    dxp_r: DFF<Bit>,
+    dyn_r: DFF<Bit>,
+    dym_r: DFF<Bits<16>>,
+    dyp_r: DFF<Bit>,
+    inval_r: DFF<Bit>,
 }
 
 impl Divider {
@@ -118,8 +135,10 @@ impl Divider {
             eye_z: Default::default(),
             dx_neg: Default::default(),
             dx_mag: Default::default(),
+            dx_pos: Default::default(),
             dy_neg: Default::default(),
             dy_mag: Default::default(),
+            dy_pos: Default::default(),
             invalid: Default::default(),
             lane: Constant::new(bits16(lane)),
             p_mask: Constant::new(bits16(p - 1)),
@@ -159,6 +178,15 @@ impl Divider {
             dyn_q: Default::default(),
             dym_q: Default::default(),
             inval_q: Default::default(),
+            dxp_q: Default::default(),
+            dyp_q: Default::default(),
+            dxn_r: Default::default(),
+            dxm_r: Default::default(),
+            dxp_r: Default::default(),
+            dyn_r: Default::default(),
+            dym_r: Default::default(),
+            dyp_r: Default::default(),
+            inval_r: Default::default(),
         }
     }
 }
@@ -168,7 +196,8 @@ impl Logic for Divider {
     fn update(&mut self) {
         dff_setup!(
             self, clock, xc, yc, zc, sx, sy, sz, mx, my, mz, f3, num_x, num_y, den, f4, ovf, dxn_q,
-            dxm_q, dyn_q, dym_q, inval_q
+            dxm_q, dyn_q, dym_q, inval_q, dxp_q, dyp_q, dxn_r, dxm_r, dxp_r, dyn_r, dym_r, dyp_r,
+            inval_r
         );
         // 1: the skew.
         self.xc.d.next = (self.n_b.val() << self.p_shift.val())
@@ -253,21 +282,35 @@ impl Logic for Divider {
                 self.dym.next = self.one.val();
             }
         }
-        self.dxm_q.d.next = self.dxm.val();
-        self.dym_q.d.next = self.dym.val();
+        self.dxm_q.d.next = bit_cast::<16, 32>(self.dxm.val());
+        self.dym_q.d.next = bit_cast::<16, 32>(self.dym.val());
         self.dxn_q.d.next = self.flags.val().get_bit(0) & (self.dxm.val() != 0);
         self.dyn_q.d.next = self.flags.val().get_bit(1) & (self.dym.val() != 0);
+        self.dxp_q.d.next = !self.flags.val().get_bit(0) & (self.dxm.val() != 0);
+        self.dyp_q.d.next = !self.flags.val().get_bit(1) & (self.dym.val() != 0);
         self.inval_q.d.next = self.inval.val();
-        self.dx_neg.next = self.dxn_q.q.val();
-        self.dx_mag.next = self.dxm_q.q.val();
-        self.dy_neg.next = self.dyn_q.q.val();
-        self.dy_mag.next = self.dym_q.q.val();
-        self.invalid.next = self.inval_q.q.val();
+        // 23: the relay.
+        self.dxn_r.d.next = self.dxn_q.q.val();
+        self.dxm_r.d.next = self.dxm_q.q.val();
+        self.dxp_r.d.next = self.dxp_q.q.val();
+        self.dyn_r.d.next = self.dyn_q.q.val();
+        self.dym_r.d.next = self.dym_q.q.val();
+        self.dyp_r.d.next = self.dyp_q.q.val();
+        self.inval_r.d.next = self.inval_q.q.val();
+        self.dx_neg.next = self.dxn_r.q.val();
+        self.dx_mag.next = self.dxm_r.q.val();
+        self.dx_pos.next = self.dxp_r.q.val();
+        self.dy_neg.next = self.dyn_r.q.val();
+        self.dy_mag.next = self.dym_r.q.val();
+        self.dy_pos.next = self.dyp_r.q.val();
+        self.invalid.next = self.inval_r.q.val();
         if !self.enabled.val() {
             self.dx_neg.next = false;
             self.dx_mag.next = 0.into();
+            self.dx_pos.next = false;
             self.dy_neg.next = false;
             self.dy_mag.next = 0.into();
+            self.dy_pos.next = false;
             self.invalid.next = false;
         }
     }

@@ -321,15 +321,15 @@ fn pipeline_perspective_every_sweep() {
 #[test]
 fn pipeline_clock_count_is_ideal_plus_fill() {
     let (cycles, ideal) = run::<4>([16, 16, 16], VIEWS[1], "composite", "phantom");
-    // One beat per clock plus 26 clocks of fill: the start register, the
-    // CFB's three address stages, the block-RAM read and its output
-    // register, the shader's input register, nine clocks of gather delay
+    // One beat per clock plus 27 clocks of fill: the start register, the
+    // CFB's three address stages, the block-RAM read, its bank register and
+    // its relay register, the shader's input register, nine clocks of gather delay
     // (the shader's 17 stages less the bilinear unit's 7, less the input
     // register), the bilinear unit's seven stages and the compositor's first
     // three (its fourth register ends the last beat's own clock).
     assert_eq!(
         cycles,
-        ideal + 26,
+        ideal + 27,
         "clocks per sweep vs the ideal n_x*n_y*n_z/p"
     );
 }

@@ -209,10 +209,10 @@ fn engine_frame_matches_under_verilator() {
     assert_eq!(r.mismatches, 0, "first differences {:?}", r.first);
     // The view sweeps 256 slices of 256 beams of 110 voxels, padded to 112
     // for p = 4: one beat per clock is 256 * 256 * 28 clocks. Shading adds
-    // one slice (the ABC gradient's delay) and 27 clocks of fill (start,
-    // the CFB's three address stages, block-RAM read and its output
-    // register, shader input, nine gather clocks, seven bilinear stages,
+    // one slice (the ABC gradient's delay) and 28 clocks of fill (start,
+    // the CFB's three address stages, block-RAM read, its bank and relay
+    // registers, shader input, nine gather clocks, seven bilinear stages,
     // the compositor's first three and the gradient unit's output register).
     assert_eq!(r.ideal_clocks, 256 * 256 * 28);
-    assert_eq!(r.clocks, r.ideal_clocks + 256 * 28 + 27);
+    assert_eq!(r.clocks, r.ideal_clocks + 256 * 28 + 28);
 }

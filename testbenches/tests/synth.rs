@@ -109,10 +109,10 @@ fn stat_parsing_and_frame_clocks() {
     assert_eq!(types.len(), 2);
     // 256 slices of 256 beams of 64 partial beams, one gradient slice, fill.
     let shaded = PipelineConfig::parse("composite_shaded_p4_256").unwrap();
-    assert_eq!(frame_clocks(256, &shaded), 256 * 256 * 64 + 256 * 64 + 27);
+    assert_eq!(frame_clocks(256, &shaded), 256 * 256 * 64 + 256 * 64 + 28);
     let mip = PipelineConfig::parse("mip_p1_8").unwrap();
-    assert_eq!(frame_clocks(8, &mip), 512 + 26);
-    // The perspective divider's 22 clocks lead the address by 18.
+    assert_eq!(frame_clocks(8, &mip), 512 + 27);
+    // The perspective divider's 23 clocks lead the address by 18.
     let perspective = PipelineConfig::parse("composite_perspective_p2_32").unwrap();
-    assert_eq!(frame_clocks(32, &perspective), 32 * 32 * 16 + 26 + 18);
+    assert_eq!(frame_clocks(32, &perspective), 32 * 32 * 16 + 27 + 18);
 }

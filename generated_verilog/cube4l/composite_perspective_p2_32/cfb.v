@@ -230,6 +230,18 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] nb_d4$d;
     wire  [15:0] nb_d4$q;
     reg  nb_d4$clock;
+    reg  run_d5$d;
+    wire  run_d5$q;
+    reg  run_d5$clock;
+    reg  [15:0] ns_d5$d;
+    wire  [15:0] ns_d5$q;
+    reg  ns_d5$clock;
+    reg  [15:0] nbeam_d5$d;
+    wire  [15:0] nbeam_d5$q;
+    reg  nbeam_d5$clock;
+    reg  [15:0] nb_d5$d;
+    wire  [15:0] nb_d5$q;
+    reg  nb_d5$clock;
     reg  valid_q$d;
     wire  valid_q$q;
     reg  valid_q$clock;
@@ -491,6 +503,26 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .q(nb_d4$q),
         .clock(nb_d4$clock)
     );
+    top$cfb$run_d5 run_d5(
+        .d(run_d5$d),
+        .q(run_d5$q),
+        .clock(run_d5$clock)
+    );
+    top$cfb$ns_d5 ns_d5(
+        .d(ns_d5$d),
+        .q(ns_d5$q),
+        .clock(ns_d5$clock)
+    );
+    top$cfb$nbeam_d5 nbeam_d5(
+        .d(nbeam_d5$d),
+        .q(nbeam_d5$q),
+        .clock(nbeam_d5$clock)
+    );
+    top$cfb$nb_d5 nb_d5(
+        .d(nb_d5$d),
+        .q(nb_d5$q),
+        .clock(nb_d5$clock)
+    );
     top$cfb$valid_q valid_q(
         .d(valid_q$d),
         .q(valid_q$q),
@@ -589,6 +621,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_d2$clock = clock;
         nb_d3$clock = clock;
         nb_d4$clock = clock;
+        run_d5$clock = clock;
+        ns_d5$clock = clock;
+        nbeam_d5$clock = clock;
+        nb_d5$clock = clock;
         ny_last$clock = clock;
         b_last$clock = clock;
         nb_left$clock = clock;
@@ -623,6 +659,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_d2$d = nb_d2$q;
         nb_d3$d = nb_d3$q;
         nb_d4$d = nb_d4$q;
+        run_d5$d = run_d5$q;
+        ns_d5$d = ns_d5$q;
+        nbeam_d5$d = nbeam_d5$q;
+        nb_d5$d = nb_d5$q;
         ny_last$d = ny_last$q;
         b_last$d = b_last$q;
         nb_left$d = nb_left$q;
@@ -665,6 +705,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         ns_d4$d = ns_d3$q;
         nbeam_d4$d = nbeam_d3$q;
         nb_d4$d = nb_d3$q;
+        run_d5$d = run_d4$q;
+        ns_d5$d = ns_d4$q;
+        nbeam_d5$d = nbeam_d4$q;
+        nb_d5$d = nb_d4$q;
         z0 = slices[('h20)+:(16)];
         z1 = slices[('h30)+:(16)];
         ny_m1 = dims[('h10)+:(16)] - 'h1;
@@ -689,11 +733,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$0$a_n_s = e_ns;
         lanes$0$a_n_beam = e_nbeam;
         lanes$0$a_n_b = e_nb;
-        lanes$0$c_n_s = ns_d3$q;
-        lanes$0$c_n_beam = nbeam_d3$q;
-        lanes$0$c_n_b = nb_d3$q;
-        lanes$0$n_s = ns_d4$q;
-        lanes$0$n_beam = nbeam_d4$q;
+        lanes$0$c_n_s = ns_d4$q;
+        lanes$0$c_n_beam = nbeam_d4$q;
+        lanes$0$c_n_b = nb_d4$q;
+        lanes$0$n_s = ns_d5$q;
+        lanes$0$n_beam = nbeam_d5$q;
         lanes$0$load_enable = load_enable;
         lanes$0$load_module = load_module;
         lanes$0$load_address = load_address;
@@ -734,11 +778,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$1$a_n_s = e_ns;
         lanes$1$a_n_beam = e_nbeam;
         lanes$1$a_n_b = e_nb;
-        lanes$1$c_n_s = ns_d3$q;
-        lanes$1$c_n_beam = nbeam_d3$q;
-        lanes$1$c_n_b = nb_d3$q;
-        lanes$1$n_s = ns_d4$q;
-        lanes$1$n_beam = nbeam_d4$q;
+        lanes$1$c_n_s = ns_d4$q;
+        lanes$1$c_n_beam = nbeam_d4$q;
+        lanes$1$c_n_b = nb_d4$q;
+        lanes$1$n_s = ns_d5$q;
+        lanes$1$n_beam = nbeam_d5$q;
         lanes$1$load_enable = load_enable;
         lanes$1$load_module = load_module;
         lanes$1$load_address = load_address;
@@ -808,10 +852,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         if (reset) begin
             running$d = 1'b0;
         end
-        valid_q$d = run_d4$q;
-        ns_q$d = ns_d4$q;
-        nbeam_q$d = nbeam_d4$q;
-        nb_q$d = nb_d4$q;
+        valid_q$d = run_d5$q;
+        ns_q$d = ns_d5$q;
+        nbeam_q$d = nbeam_d5$q;
+        nb_q$d = nb_d5$q;
         busy_pass = running$q;
         if (perspective) begin
             busy_pass = lead$busy;
@@ -923,6 +967,21 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -950,8 +1009,8 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -959,8 +1018,8 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -973,9 +1032,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg;
-    wire  [31:0] div$dx_mag;
+    wire  [15:0] div$dx_mag;
+    wire  div$dx_pos;
     wire  div$dy_neg;
-    wire  [31:0] div$dy_mag;
+    wire  [15:0] div$dy_mag;
+    wire  div$dy_pos;
     wire  div$invalid;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -1076,12 +1137,18 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -1104,12 +1171,12 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -1133,6 +1200,31 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$0$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$cfb$lanes$0$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$cfb$lanes$0$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$cfb$lanes$0$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$cfb$lanes$0$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$cfb$lanes$0$nx nx(
         .d(nx$d),
@@ -1214,8 +1306,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .eye_z(div$eye_z),
         .dx_neg(div$dx_neg),
         .dx_mag(div$dx_mag),
+        .dx_pos(div$dx_pos),
         .dy_neg(div$dy_neg),
         .dy_mag(div$dy_mag),
+        .dy_pos(div$dy_pos),
         .invalid(div$invalid)
     );
     top$cfb$lanes$0$dxn_q dxn_q(
@@ -1383,6 +1477,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$cfb$lanes$0$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$cfb$lanes$0$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -1392,6 +1491,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$cfb$lanes$0$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$cfb$lanes$0$sr_q sr_q(
         .d(sr_q$d),
@@ -1427,8 +1531,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -1466,6 +1572,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -1481,8 +1592,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -1520,6 +1633,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -1530,33 +1648,38 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -1634,10 +1757,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -1681,6 +1804,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -1688,15 +1812,16 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -1704,7 +1829,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -1841,6 +1966,23 @@ module top$cfb$lanes$0$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$addr_q2
+module top$cfb$lanes$0$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$addr_q3
 module top$cfb$lanes$0$b_near_r(d,q,clock);
     
     // Module arguments
@@ -2096,6 +2238,23 @@ module top$cfb$lanes$0$ext_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$ext_q
+module top$cfb$lanes$0$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$ext_q2
 module top$cfb$lanes$0$face_q(d,q,clock);
     
     // Module arguments
@@ -2245,16 +2404,25 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16383:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -2266,6 +2434,7 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -2282,7 +2451,7 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$cfb$lanes$0$memory
 module top$cfb$lanes$0$nx(d,q,clock);
@@ -2407,13 +2576,13 @@ endmodule // top$cfb$lanes$0$par_dx_pos
 module top$cfb$lanes$0$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -2458,13 +2627,13 @@ endmodule // top$cfb$lanes$0$par_dy_pos
 module top$cfb$lanes$0$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -2557,6 +2726,91 @@ module top$cfb$lanes$0$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$sr_q
+module top$cfb$lanes$0$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_axes
+module top$cfb$lanes$0$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_dims
+module top$cfb$lanes$0$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_dx
+module top$cfb$lanes$0$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_dy
+module top$cfb$lanes$0$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_slices
 module top$cfb$lanes$0$x_first_r(d,q,clock);
     
     // Module arguments
@@ -2757,6 +3011,21 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -2784,8 +3053,8 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -2793,8 +3062,8 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -2807,9 +3076,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg;
-    wire  [31:0] div$dx_mag;
+    wire  [15:0] div$dx_mag;
+    wire  div$dx_pos;
     wire  div$dy_neg;
-    wire  [31:0] div$dy_mag;
+    wire  [15:0] div$dy_mag;
+    wire  div$dy_pos;
     wire  div$invalid;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -2910,12 +3181,18 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -2938,12 +3215,12 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -2967,6 +3244,31 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$1$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$cfb$lanes$1$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$cfb$lanes$1$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$cfb$lanes$1$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$cfb$lanes$1$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$cfb$lanes$1$nx nx(
         .d(nx$d),
@@ -3048,8 +3350,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .eye_z(div$eye_z),
         .dx_neg(div$dx_neg),
         .dx_mag(div$dx_mag),
+        .dx_pos(div$dx_pos),
         .dy_neg(div$dy_neg),
         .dy_mag(div$dy_mag),
+        .dy_pos(div$dy_pos),
         .invalid(div$invalid)
     );
     top$cfb$lanes$1$dxn_q dxn_q(
@@ -3217,6 +3521,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$cfb$lanes$1$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$cfb$lanes$1$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -3226,6 +3535,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$cfb$lanes$1$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$cfb$lanes$1$sr_q sr_q(
         .d(sr_q$d),
@@ -3261,8 +3575,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -3300,6 +3616,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -3315,8 +3636,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -3354,6 +3677,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -3364,33 +3692,38 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -3468,10 +3801,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -3515,6 +3848,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -3522,15 +3856,16 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -3538,7 +3873,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -3675,6 +4010,23 @@ module top$cfb$lanes$1$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$addr_q2
+module top$cfb$lanes$1$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$addr_q3
 module top$cfb$lanes$1$b_near_r(d,q,clock);
     
     // Module arguments
@@ -3930,6 +4282,23 @@ module top$cfb$lanes$1$ext_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$ext_q
+module top$cfb$lanes$1$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$ext_q2
 module top$cfb$lanes$1$face_q(d,q,clock);
     
     // Module arguments
@@ -4079,16 +4448,25 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16383:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -4100,6 +4478,7 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
     end
     
     always @(posedge write_clock) begin
@@ -4116,7 +4495,7 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
     end
     
     always @(*) begin
-       read_data = {8'd0, q_0[7:0]};
+       read_data = {8'd0, r_0[7:0]};
     end
 endmodule // top$cfb$lanes$1$memory
 module top$cfb$lanes$1$nx(d,q,clock);
@@ -4241,13 +4620,13 @@ endmodule // top$cfb$lanes$1$par_dx_pos
 module top$cfb$lanes$1$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -4292,13 +4671,13 @@ endmodule // top$cfb$lanes$1$par_dy_pos
 module top$cfb$lanes$1$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -4391,6 +4770,91 @@ module top$cfb$lanes$1$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$sr_q
+module top$cfb$lanes$1$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_axes
+module top$cfb$lanes$1$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_dims
+module top$cfb$lanes$1$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_dx
+module top$cfb$lanes$1$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_dy
+module top$cfb$lanes$1$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_slices
 module top$cfb$lanes$1$x_first_r(d,q,clock);
     
     // Module arguments
@@ -4612,6 +5076,23 @@ module top$cfb$nb_d4(d,q,clock);
     end
           
 endmodule // top$cfb$nb_d4
+module top$cfb$nb_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nb_d5
 module top$cfb$nb_end(d,q,clock);
     
     // Module arguments
@@ -4748,6 +5229,23 @@ module top$cfb$nbeam_d4(d,q,clock);
     end
           
 endmodule // top$cfb$nbeam_d4
+module top$cfb$nbeam_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nbeam_d5
 module top$cfb$nbeam_end(d,q,clock);
     
     // Module arguments
@@ -4884,6 +5382,23 @@ module top$cfb$ns_d4(d,q,clock);
     end
           
 endmodule // top$cfb$ns_d4
+module top$cfb$ns_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ns_d5
 module top$cfb$ns_end(d,q,clock);
     
     // Module arguments
@@ -5037,6 +5552,23 @@ module top$cfb$run_d4(d,q,clock);
     end
           
 endmodule // top$cfb$run_d4
+module top$cfb$run_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$run_d5
 module top$cfb$running(d,q,clock);
     
     // Module arguments

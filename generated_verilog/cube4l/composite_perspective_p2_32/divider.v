@@ -1,4 +1,4 @@
-module top$cfb$lanes$0$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$lanes$0$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,dx_pos,dy_neg,dy_mag,dy_pos,invalid);
     
     // Module arguments
     input wire  clock;
@@ -9,9 +9,11 @@ module top$cfb$lanes$0$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,
     input wire  [63:0] eye_y;
     input wire  [63:0] eye_z;
     output reg  dx_neg;
-    output reg  [31:0] dx_mag;
+    output reg  [15:0] dx_mag;
+    output reg  dx_pos;
     output reg  dy_neg;
-    output reg  [31:0] dy_mag;
+    output reg  [15:0] dy_mag;
+    output reg  dy_pos;
     output reg  invalid;
     
     // Constant declarations
@@ -292,18 +294,45 @@ module top$cfb$lanes$0$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,
     reg  dxn_q$d;
     wire  dxn_q$q;
     reg  dxn_q$clock;
-    reg  [31:0] dxm_q$d;
-    wire  [31:0] dxm_q$q;
+    reg  [15:0] dxm_q$d;
+    wire  [15:0] dxm_q$q;
     reg  dxm_q$clock;
     reg  dyn_q$d;
     wire  dyn_q$q;
     reg  dyn_q$clock;
-    reg  [31:0] dym_q$d;
-    wire  [31:0] dym_q$q;
+    reg  [15:0] dym_q$d;
+    wire  [15:0] dym_q$q;
     reg  dym_q$clock;
     reg  inval_q$d;
     wire  inval_q$q;
     reg  inval_q$clock;
+    reg  dxp_q$d;
+    wire  dxp_q$q;
+    reg  dxp_q$clock;
+    reg  dyp_q$d;
+    wire  dyp_q$q;
+    reg  dyp_q$clock;
+    reg  dxn_r$d;
+    wire  dxn_r$q;
+    reg  dxn_r$clock;
+    reg  [15:0] dxm_r$d;
+    wire  [15:0] dxm_r$q;
+    reg  dxm_r$clock;
+    reg  dxp_r$d;
+    wire  dxp_r$q;
+    reg  dxp_r$clock;
+    reg  dyn_r$d;
+    wire  dyn_r$q;
+    reg  dyn_r$clock;
+    reg  [15:0] dym_r$d;
+    wire  [15:0] dym_r$q;
+    reg  dym_r$clock;
+    reg  dyp_r$d;
+    wire  dyp_r$q;
+    reg  dyp_r$clock;
+    reg  inval_r$d;
+    wire  inval_r$q;
+    reg  inval_r$clock;
     
     // Local signals
     reg  x_neg;
@@ -674,12 +703,59 @@ module top$cfb$lanes$0$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,
         .q(inval_q$q),
         .clock(inval_q$clock)
     );
+    top$cfb$lanes$0$div$dxp_q dxp_q(
+        .d(dxp_q$d),
+        .q(dxp_q$q),
+        .clock(dxp_q$clock)
+    );
+    top$cfb$lanes$0$div$dyp_q dyp_q(
+        .d(dyp_q$d),
+        .q(dyp_q$q),
+        .clock(dyp_q$clock)
+    );
+    top$cfb$lanes$0$div$dxn_r dxn_r(
+        .d(dxn_r$d),
+        .q(dxn_r$q),
+        .clock(dxn_r$clock)
+    );
+    top$cfb$lanes$0$div$dxm_r dxm_r(
+        .d(dxm_r$d),
+        .q(dxm_r$q),
+        .clock(dxm_r$clock)
+    );
+    top$cfb$lanes$0$div$dxp_r dxp_r(
+        .d(dxp_r$d),
+        .q(dxp_r$q),
+        .clock(dxp_r$clock)
+    );
+    top$cfb$lanes$0$div$dyn_r dyn_r(
+        .d(dyn_r$d),
+        .q(dyn_r$q),
+        .clock(dyn_r$clock)
+    );
+    top$cfb$lanes$0$div$dym_r dym_r(
+        .d(dym_r$d),
+        .q(dym_r$q),
+        .clock(dym_r$clock)
+    );
+    top$cfb$lanes$0$div$dyp_r dyp_r(
+        .d(dyp_r$d),
+        .q(dyp_r$q),
+        .clock(dyp_r$clock)
+    );
+    top$cfb$lanes$0$div$inval_r inval_r(
+        .d(inval_r$d),
+        .q(inval_r$q),
+        .clock(inval_r$clock)
+    );
     
     // Update code
     reg  dx_neg_pass;
-    reg  [31:0] dx_mag_pass;
+    reg  [15:0] dx_mag_pass;
+    reg  dx_pos_pass;
     reg  dy_neg_pass;
-    reg  [31:0] dy_mag_pass;
+    reg  [15:0] dy_mag_pass;
+    reg  dy_pos_pass;
     reg  invalid_pass;
     always @(*) begin
         xc$clock = clock;
@@ -702,6 +778,15 @@ module top$cfb$lanes$0$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,
         dyn_q$clock = clock;
         dym_q$clock = clock;
         inval_q$clock = clock;
+        dxp_q$clock = clock;
+        dyp_q$clock = clock;
+        dxn_r$clock = clock;
+        dxm_r$clock = clock;
+        dxp_r$clock = clock;
+        dyn_r$clock = clock;
+        dym_r$clock = clock;
+        dyp_r$clock = clock;
+        inval_r$clock = clock;
         xc$d = xc$q;
         yc$d = yc$q;
         zc$d = zc$q;
@@ -722,6 +807,15 @@ module top$cfb$lanes$0$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,
         dyn_q$d = dyn_q$q;
         dym_q$d = dym_q$q;
         inval_q$d = inval_q$q;
+        dxp_q$d = dxp_q$q;
+        dyp_q$d = dyp_q$q;
+        dxn_r$d = dxn_r$q;
+        dxm_r$d = dxm_r$q;
+        dxp_r$d = dxp_r$q;
+        dyn_r$d = dyn_r$q;
+        dym_r$d = dym_r$q;
+        dyp_r$d = dyp_r$q;
+        inval_r$d = inval_r$q;
         xc$d = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
         yc$d = n_beam;
         zc$d = n_s;
@@ -886,27 +980,42 @@ module top$cfb$lanes$0$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,
                 dym = one;
             end
         end
-        dxm_q$d = dxm;
-        dym_q$d = dym;
+        dxm_q$d = 16'(dxm);
+        dym_q$d = 16'(dym);
         dxn_q$d = flags['h0] & (dxm != 'h0);
         dyn_q$d = flags['h1] & (dym != 'h0);
+        dxp_q$d = ~flags['h0] & (dxm != 'h0);
+        dyp_q$d = ~flags['h1] & (dym != 'h0);
         inval_q$d = inval;
-        dx_neg_pass = dxn_q$q;
-        dx_mag_pass = dxm_q$q;
-        dy_neg_pass = dyn_q$q;
-        dy_mag_pass = dym_q$q;
-        invalid_pass = inval_q$q;
+        dxn_r$d = dxn_q$q;
+        dxm_r$d = dxm_q$q;
+        dxp_r$d = dxp_q$q;
+        dyn_r$d = dyn_q$q;
+        dym_r$d = dym_q$q;
+        dyp_r$d = dyp_q$q;
+        inval_r$d = inval_q$q;
+        dx_neg_pass = dxn_r$q;
+        dx_mag_pass = dxm_r$q;
+        dx_pos_pass = dxp_r$q;
+        dy_neg_pass = dyn_r$q;
+        dy_mag_pass = dym_r$q;
+        dy_pos_pass = dyp_r$q;
+        invalid_pass = inval_r$q;
         if (~enabled) begin
             dx_neg_pass = 1'b0;
             dx_mag_pass = 'h0;
+            dx_pos_pass = 1'b0;
             dy_neg_pass = 1'b0;
             dy_mag_pass = 'h0;
+            dy_pos_pass = 1'b0;
             invalid_pass = 1'b0;
         end
         dx_neg = dx_neg_pass;
         dx_mag = dx_mag_pass;
+        dx_pos = dx_pos_pass;
         dy_neg = dy_neg_pass;
         dy_mag = dy_mag_pass;
+        dy_pos = dy_pos_pass;
         invalid = invalid_pass;
     end
     
@@ -931,13 +1040,13 @@ endmodule // top$cfb$lanes$0$div$den
 module top$cfb$lanes$0$div$dxm_q(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -945,6 +1054,23 @@ module top$cfb$lanes$0$div$dxm_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$div$dxm_q
+module top$cfb$lanes$0$div$dxm_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$div$dxm_r
 module top$cfb$lanes$0$div$dxn_q(d,q,clock);
     
     // Module arguments
@@ -962,16 +1088,67 @@ module top$cfb$lanes$0$div$dxn_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$div$dxn_q
-module top$cfb$lanes$0$div$dym_q(d,q,clock);
+module top$cfb$lanes$0$div$dxn_r(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$div$dxn_r
+module top$cfb$lanes$0$div$dxp_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$div$dxp_q
+module top$cfb$lanes$0$div$dxp_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$div$dxp_r
+module top$cfb$lanes$0$div$dym_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -979,6 +1156,23 @@ module top$cfb$lanes$0$div$dym_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$div$dym_q
+module top$cfb$lanes$0$div$dym_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$div$dym_r
 module top$cfb$lanes$0$div$dyn_q(d,q,clock);
     
     // Module arguments
@@ -996,6 +1190,57 @@ module top$cfb$lanes$0$div$dyn_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$div$dyn_q
+module top$cfb$lanes$0$div$dyn_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$div$dyn_r
+module top$cfb$lanes$0$div$dyp_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$div$dyp_q
+module top$cfb$lanes$0$div$dyp_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$div$dyp_r
 module top$cfb$lanes$0$div$f3(d,q,clock);
     
     // Module arguments
@@ -1047,6 +1292,23 @@ module top$cfb$lanes$0$div$inval_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$div$inval_q
+module top$cfb$lanes$0$div$inval_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$div$inval_r
 module top$cfb$lanes$0$div$mx(d,q,clock);
     
     // Module arguments
@@ -4923,7 +5185,7 @@ module top$cfb$lanes$0$div$zc(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$div$zc
-module top$cfb$lanes$1$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,dy_neg,dy_mag,invalid);
+module top$cfb$lanes$1$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,dx_pos,dy_neg,dy_mag,dy_pos,invalid);
     
     // Module arguments
     input wire  clock;
@@ -4934,9 +5196,11 @@ module top$cfb$lanes$1$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,
     input wire  [63:0] eye_y;
     input wire  [63:0] eye_z;
     output reg  dx_neg;
-    output reg  [31:0] dx_mag;
+    output reg  [15:0] dx_mag;
+    output reg  dx_pos;
     output reg  dy_neg;
-    output reg  [31:0] dy_mag;
+    output reg  [15:0] dy_mag;
+    output reg  dy_pos;
     output reg  invalid;
     
     // Constant declarations
@@ -5217,18 +5481,45 @@ module top$cfb$lanes$1$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,
     reg  dxn_q$d;
     wire  dxn_q$q;
     reg  dxn_q$clock;
-    reg  [31:0] dxm_q$d;
-    wire  [31:0] dxm_q$q;
+    reg  [15:0] dxm_q$d;
+    wire  [15:0] dxm_q$q;
     reg  dxm_q$clock;
     reg  dyn_q$d;
     wire  dyn_q$q;
     reg  dyn_q$clock;
-    reg  [31:0] dym_q$d;
-    wire  [31:0] dym_q$q;
+    reg  [15:0] dym_q$d;
+    wire  [15:0] dym_q$q;
     reg  dym_q$clock;
     reg  inval_q$d;
     wire  inval_q$q;
     reg  inval_q$clock;
+    reg  dxp_q$d;
+    wire  dxp_q$q;
+    reg  dxp_q$clock;
+    reg  dyp_q$d;
+    wire  dyp_q$q;
+    reg  dyp_q$clock;
+    reg  dxn_r$d;
+    wire  dxn_r$q;
+    reg  dxn_r$clock;
+    reg  [15:0] dxm_r$d;
+    wire  [15:0] dxm_r$q;
+    reg  dxm_r$clock;
+    reg  dxp_r$d;
+    wire  dxp_r$q;
+    reg  dxp_r$clock;
+    reg  dyn_r$d;
+    wire  dyn_r$q;
+    reg  dyn_r$clock;
+    reg  [15:0] dym_r$d;
+    wire  [15:0] dym_r$q;
+    reg  dym_r$clock;
+    reg  dyp_r$d;
+    wire  dyp_r$q;
+    reg  dyp_r$clock;
+    reg  inval_r$d;
+    wire  inval_r$q;
+    reg  inval_r$clock;
     
     // Local signals
     reg  x_neg;
@@ -5599,12 +5890,59 @@ module top$cfb$lanes$1$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,
         .q(inval_q$q),
         .clock(inval_q$clock)
     );
+    top$cfb$lanes$1$div$dxp_q dxp_q(
+        .d(dxp_q$d),
+        .q(dxp_q$q),
+        .clock(dxp_q$clock)
+    );
+    top$cfb$lanes$1$div$dyp_q dyp_q(
+        .d(dyp_q$d),
+        .q(dyp_q$q),
+        .clock(dyp_q$clock)
+    );
+    top$cfb$lanes$1$div$dxn_r dxn_r(
+        .d(dxn_r$d),
+        .q(dxn_r$q),
+        .clock(dxn_r$clock)
+    );
+    top$cfb$lanes$1$div$dxm_r dxm_r(
+        .d(dxm_r$d),
+        .q(dxm_r$q),
+        .clock(dxm_r$clock)
+    );
+    top$cfb$lanes$1$div$dxp_r dxp_r(
+        .d(dxp_r$d),
+        .q(dxp_r$q),
+        .clock(dxp_r$clock)
+    );
+    top$cfb$lanes$1$div$dyn_r dyn_r(
+        .d(dyn_r$d),
+        .q(dyn_r$q),
+        .clock(dyn_r$clock)
+    );
+    top$cfb$lanes$1$div$dym_r dym_r(
+        .d(dym_r$d),
+        .q(dym_r$q),
+        .clock(dym_r$clock)
+    );
+    top$cfb$lanes$1$div$dyp_r dyp_r(
+        .d(dyp_r$d),
+        .q(dyp_r$q),
+        .clock(dyp_r$clock)
+    );
+    top$cfb$lanes$1$div$inval_r inval_r(
+        .d(inval_r$d),
+        .q(inval_r$q),
+        .clock(inval_r$clock)
+    );
     
     // Update code
     reg  dx_neg_pass;
-    reg  [31:0] dx_mag_pass;
+    reg  [15:0] dx_mag_pass;
+    reg  dx_pos_pass;
     reg  dy_neg_pass;
-    reg  [31:0] dy_mag_pass;
+    reg  [15:0] dy_mag_pass;
+    reg  dy_pos_pass;
     reg  invalid_pass;
     always @(*) begin
         xc$clock = clock;
@@ -5627,6 +5965,15 @@ module top$cfb$lanes$1$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,
         dyn_q$clock = clock;
         dym_q$clock = clock;
         inval_q$clock = clock;
+        dxp_q$clock = clock;
+        dyp_q$clock = clock;
+        dxn_r$clock = clock;
+        dxm_r$clock = clock;
+        dxp_r$clock = clock;
+        dyn_r$clock = clock;
+        dym_r$clock = clock;
+        dyp_r$clock = clock;
+        inval_r$clock = clock;
         xc$d = xc$q;
         yc$d = yc$q;
         zc$d = zc$q;
@@ -5647,6 +5994,15 @@ module top$cfb$lanes$1$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,
         dyn_q$d = dyn_q$q;
         dym_q$d = dym_q$q;
         inval_q$d = inval_q$q;
+        dxp_q$d = dxp_q$q;
+        dyp_q$d = dyp_q$q;
+        dxn_r$d = dxn_r$q;
+        dxm_r$d = dxm_r$q;
+        dxp_r$d = dxp_r$q;
+        dyn_r$d = dyn_r$q;
+        dym_r$d = dym_r$q;
+        dyp_r$d = dyp_r$q;
+        inval_r$d = inval_r$q;
         xc$d = (n_b << p_shift) | ((lane - n_beam - n_s) & p_mask);
         yc$d = n_beam;
         zc$d = n_s;
@@ -5811,27 +6167,42 @@ module top$cfb$lanes$1$div(clock,n_s,n_beam,n_b,eye_x,eye_y,eye_z,dx_neg,dx_mag,
                 dym = one;
             end
         end
-        dxm_q$d = dxm;
-        dym_q$d = dym;
+        dxm_q$d = 16'(dxm);
+        dym_q$d = 16'(dym);
         dxn_q$d = flags['h0] & (dxm != 'h0);
         dyn_q$d = flags['h1] & (dym != 'h0);
+        dxp_q$d = ~flags['h0] & (dxm != 'h0);
+        dyp_q$d = ~flags['h1] & (dym != 'h0);
         inval_q$d = inval;
-        dx_neg_pass = dxn_q$q;
-        dx_mag_pass = dxm_q$q;
-        dy_neg_pass = dyn_q$q;
-        dy_mag_pass = dym_q$q;
-        invalid_pass = inval_q$q;
+        dxn_r$d = dxn_q$q;
+        dxm_r$d = dxm_q$q;
+        dxp_r$d = dxp_q$q;
+        dyn_r$d = dyn_q$q;
+        dym_r$d = dym_q$q;
+        dyp_r$d = dyp_q$q;
+        inval_r$d = inval_q$q;
+        dx_neg_pass = dxn_r$q;
+        dx_mag_pass = dxm_r$q;
+        dx_pos_pass = dxp_r$q;
+        dy_neg_pass = dyn_r$q;
+        dy_mag_pass = dym_r$q;
+        dy_pos_pass = dyp_r$q;
+        invalid_pass = inval_r$q;
         if (~enabled) begin
             dx_neg_pass = 1'b0;
             dx_mag_pass = 'h0;
+            dx_pos_pass = 1'b0;
             dy_neg_pass = 1'b0;
             dy_mag_pass = 'h0;
+            dy_pos_pass = 1'b0;
             invalid_pass = 1'b0;
         end
         dx_neg = dx_neg_pass;
         dx_mag = dx_mag_pass;
+        dx_pos = dx_pos_pass;
         dy_neg = dy_neg_pass;
         dy_mag = dy_mag_pass;
+        dy_pos = dy_pos_pass;
         invalid = invalid_pass;
     end
     
@@ -5856,13 +6227,13 @@ endmodule // top$cfb$lanes$1$div$den
 module top$cfb$lanes$1$div$dxm_q(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -5870,6 +6241,23 @@ module top$cfb$lanes$1$div$dxm_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$div$dxm_q
+module top$cfb$lanes$1$div$dxm_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$div$dxm_r
 module top$cfb$lanes$1$div$dxn_q(d,q,clock);
     
     // Module arguments
@@ -5887,16 +6275,67 @@ module top$cfb$lanes$1$div$dxn_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$div$dxn_q
-module top$cfb$lanes$1$div$dym_q(d,q,clock);
+module top$cfb$lanes$1$div$dxn_r(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$div$dxn_r
+module top$cfb$lanes$1$div$dxp_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$div$dxp_q
+module top$cfb$lanes$1$div$dxp_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$div$dxp_r
+module top$cfb$lanes$1$div$dym_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
     end
     
     always @(posedge clock) begin
@@ -5904,6 +6343,23 @@ module top$cfb$lanes$1$div$dym_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$div$dym_q
+module top$cfb$lanes$1$div$dym_r(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$div$dym_r
 module top$cfb$lanes$1$div$dyn_q(d,q,clock);
     
     // Module arguments
@@ -5921,6 +6377,57 @@ module top$cfb$lanes$1$div$dyn_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$div$dyn_q
+module top$cfb$lanes$1$div$dyn_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$div$dyn_r
+module top$cfb$lanes$1$div$dyp_q(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$div$dyp_q
+module top$cfb$lanes$1$div$dyp_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$div$dyp_r
 module top$cfb$lanes$1$div$f3(d,q,clock);
     
     // Module arguments
@@ -5972,6 +6479,23 @@ module top$cfb$lanes$1$div$inval_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$div$inval_q
+module top$cfb$lanes$1$div$inval_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$div$inval_r
 module top$cfb$lanes$1$div$mx(d,q,clock);
     
     // Module arguments

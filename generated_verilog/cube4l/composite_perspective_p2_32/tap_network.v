@@ -1265,6 +1265,7 @@ module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [31:0] mem_0_0[13:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -1650,6 +1651,7 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [31:0] mem_0_0[13:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -2051,6 +2053,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+    (* no_rw_check *)
     reg [31:0] mem_0_0[478:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -4512,6 +4515,7 @@ module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [31:0] mem_0_0[13:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -4897,6 +4901,7 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [31:0] mem_0_0[13:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -5298,6 +5303,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+    (* no_rw_check *)
     reg [31:0] mem_0_0[478:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;

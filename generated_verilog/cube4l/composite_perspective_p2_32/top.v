@@ -37,7 +37,7 @@ module top(clock,start,reset,load_enable,load_module,load_address,load_data,host
     
     // Constant declarations
     localparam  gradient = 1'b0;
-    localparam  flush_clocks = 8'h2c;
+    localparam  flush_clocks = 8'h2d;
     
     // Stub signals
     reg  view$clock;

@@ -796,13 +796,21 @@ module top$lanes$0$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16316:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -1202,6 +1210,7 @@ module top$lanes$0$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -1587,6 +1596,7 @@ module top$lanes$0$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -1971,13 +1981,21 @@ module top$lanes$0$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16317:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -2947,13 +2965,21 @@ module top$lanes$1$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16316:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -3353,6 +3379,7 @@ module top$lanes$1$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -3738,6 +3765,7 @@ module top$lanes$1$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -4122,13 +4150,21 @@ module top$lanes$1$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16317:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -5098,13 +5134,21 @@ module top$lanes$2$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16316:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -5504,6 +5548,7 @@ module top$lanes$2$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -5889,6 +5934,7 @@ module top$lanes$2$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -6273,13 +6319,21 @@ module top$lanes$2$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16317:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -7249,13 +7303,21 @@ module top$lanes$3$feed$abc$line_a$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16316:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16316:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -7655,6 +7717,7 @@ module top$lanes$3$feed$abc$line_b$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -8040,6 +8103,7 @@ module top$lanes$3$feed$abc$line_c$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[61:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -8424,13 +8488,21 @@ module top$lanes$3$feed$abc$line_d$ram(read_address,read_clock,read_data,write_a
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16317:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16317:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;

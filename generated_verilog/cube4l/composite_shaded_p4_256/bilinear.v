@@ -26,9 +26,18 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     output reg  [31:0] out$3;
     
     // Stub signals
-    reg  [15:0] wx_q$d;
-    wire  [15:0] wx_q$q;
-    reg  wx_q$clock;
+    reg  [15:0] wx_q$0$d;
+    wire  [15:0] wx_q$0$q;
+    reg  wx_q$0$clock;
+    reg  [15:0] wx_q$1$d;
+    wire  [15:0] wx_q$1$q;
+    reg  wx_q$1$clock;
+    reg  [15:0] wx_q$2$d;
+    wire  [15:0] wx_q$2$q;
+    reg  wx_q$2$clock;
+    reg  [15:0] wx_q$3$d;
+    wire  [15:0] wx_q$3$q;
+    reg  wx_q$3$clock;
     reg  [15:0] wy_q$0$d;
     wire  [15:0] wy_q$0$q;
     reg  wy_q$0$clock;
@@ -38,9 +47,18 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     reg  [15:0] wy_q$2$d;
     wire  [15:0] wy_q$2$q;
     reg  wy_q$2$clock;
-    reg  [15:0] wy_q$3$d;
-    wire  [15:0] wy_q$3$q;
-    reg  wy_q$3$clock;
+    reg  [15:0] wy_last$0$d;
+    wire  [15:0] wy_last$0$q;
+    reg  wy_last$0$clock;
+    reg  [15:0] wy_last$1$d;
+    wire  [15:0] wy_last$1$q;
+    reg  wy_last$1$clock;
+    reg  [15:0] wy_last$2$d;
+    wire  [15:0] wy_last$2$q;
+    reg  wy_last$2$clock;
+    reg  [15:0] wy_last$3$d;
+    wire  [15:0] wy_last$3$q;
+    reg  wy_last$3$clock;
     reg  ch$0$clock;
     reg  [31:0] ch$0$c00;
     reg  [31:0] ch$0$c10;
@@ -75,10 +93,25 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     wire  [31:0] ch$3$y;
     
     // Sub module instances
-    top$lanes$0$bilinear$wx_q wx_q(
-        .d(wx_q$d),
-        .q(wx_q$q),
-        .clock(wx_q$clock)
+    top$lanes$0$bilinear$wx_q$0 wx_q$0(
+        .d(wx_q$0$d),
+        .q(wx_q$0$q),
+        .clock(wx_q$0$clock)
+    );
+    top$lanes$0$bilinear$wx_q$1 wx_q$1(
+        .d(wx_q$1$d),
+        .q(wx_q$1$q),
+        .clock(wx_q$1$clock)
+    );
+    top$lanes$0$bilinear$wx_q$2 wx_q$2(
+        .d(wx_q$2$d),
+        .q(wx_q$2$q),
+        .clock(wx_q$2$clock)
+    );
+    top$lanes$0$bilinear$wx_q$3 wx_q$3(
+        .d(wx_q$3$d),
+        .q(wx_q$3$q),
+        .clock(wx_q$3$clock)
     );
     top$lanes$0$bilinear$wy_q$0 wy_q$0(
         .d(wy_q$0$d),
@@ -95,10 +128,25 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         .q(wy_q$2$q),
         .clock(wy_q$2$clock)
     );
-    top$lanes$0$bilinear$wy_q$3 wy_q$3(
-        .d(wy_q$3$d),
-        .q(wy_q$3$q),
-        .clock(wy_q$3$clock)
+    top$lanes$0$bilinear$wy_last$0 wy_last$0(
+        .d(wy_last$0$d),
+        .q(wy_last$0$q),
+        .clock(wy_last$0$clock)
+    );
+    top$lanes$0$bilinear$wy_last$1 wy_last$1(
+        .d(wy_last$1$d),
+        .q(wy_last$1$q),
+        .clock(wy_last$1$clock)
+    );
+    top$lanes$0$bilinear$wy_last$2 wy_last$2(
+        .d(wy_last$2$d),
+        .q(wy_last$2$q),
+        .clock(wy_last$2$clock)
+    );
+    top$lanes$0$bilinear$wy_last$3 wy_last$3(
+        .d(wy_last$3$d),
+        .q(wy_last$3$q),
+        .clock(wy_last$3$clock)
     );
     top$lanes$0$bilinear$ch$0 ch$0(
         .clock(ch$0$clock),
@@ -143,48 +191,59 @@ module top$lanes$0$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     
     // Update code
     always @(*) begin
-        wx_q$clock = clock;
-        wx_q$d = wx_q$q;
         wy_q$0$clock = clock;
         wy_q$1$clock = clock;
         wy_q$2$clock = clock;
-        wy_q$3$clock = clock;
-        wx_q$d = wx;
         wy_q$0$d = wy;
         wy_q$1$d = wy_q$0$q;
         wy_q$2$d = wy_q$1$q;
-        wy_q$3$d = wy_q$2$q;
+        wx_q$0$clock = clock;
+        wx_q$0$d = wx;
+        wy_last$0$clock = clock;
+        wy_last$0$d = wy_q$2$q;
         ch$0$clock = clock;
         ch$0$c00 = c00$0;
         ch$0$c10 = c10$0;
         ch$0$c01 = c01$0;
         ch$0$c11 = c11$0;
-        ch$0$wx = wx_q$q;
-        ch$0$wy = wy_q$3$q;
+        ch$0$wx = wx_q$0$q;
+        ch$0$wy = wy_last$0$q;
         out$0 = ch$0$y;
+        wx_q$1$clock = clock;
+        wx_q$1$d = wx;
+        wy_last$1$clock = clock;
+        wy_last$1$d = wy_q$2$q;
         ch$1$clock = clock;
         ch$1$c00 = c00$1;
         ch$1$c10 = c10$1;
         ch$1$c01 = c01$1;
         ch$1$c11 = c11$1;
-        ch$1$wx = wx_q$q;
-        ch$1$wy = wy_q$3$q;
+        ch$1$wx = wx_q$1$q;
+        ch$1$wy = wy_last$1$q;
         out$1 = ch$1$y;
+        wx_q$2$clock = clock;
+        wx_q$2$d = wx;
+        wy_last$2$clock = clock;
+        wy_last$2$d = wy_q$2$q;
         ch$2$clock = clock;
         ch$2$c00 = c00$2;
         ch$2$c10 = c10$2;
         ch$2$c01 = c01$2;
         ch$2$c11 = c11$2;
-        ch$2$wx = wx_q$q;
-        ch$2$wy = wy_q$3$q;
+        ch$2$wx = wx_q$2$q;
+        ch$2$wy = wy_last$2$q;
         out$2 = ch$2$y;
+        wx_q$3$clock = clock;
+        wx_q$3$d = wx;
+        wy_last$3$clock = clock;
+        wy_last$3$d = wy_q$2$q;
         ch$3$clock = clock;
         ch$3$c00 = c00$3;
         ch$3$c10 = c10$3;
         ch$3$c01 = c01$3;
         ch$3$c11 = c11$3;
-        ch$3$wx = wx_q$q;
-        ch$3$wy = wy_q$3$q;
+        ch$3$wx = wx_q$3$q;
+        ch$3$wy = wy_last$3$q;
         out$3 = ch$3$y;
     end
     
@@ -4285,7 +4344,7 @@ module top$lanes$0$bilinear$ch$3$vertical$y_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$vertical$y_q
-module top$lanes$0$bilinear$wx_q(d,q,clock);
+module top$lanes$0$bilinear$wx_q$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -4297,11 +4356,130 @@ module top$lanes$0$bilinear$wx_q(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
-endmodule // top$lanes$0$bilinear$wx_q
+endmodule // top$lanes$0$bilinear$wx_q$0
+module top$lanes$0$bilinear$wx_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$bilinear$wx_q$1
+module top$lanes$0$bilinear$wx_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$bilinear$wx_q$2
+module top$lanes$0$bilinear$wx_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$bilinear$wx_q$3
+module top$lanes$0$bilinear$wy_last$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$bilinear$wy_last$0
+module top$lanes$0$bilinear$wy_last$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$bilinear$wy_last$1
+module top$lanes$0$bilinear$wy_last$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$bilinear$wy_last$2
+module top$lanes$0$bilinear$wy_last$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$bilinear$wy_last$3
 module top$lanes$0$bilinear$wy_q$0(d,q,clock);
     
     // Module arguments
@@ -4353,23 +4531,6 @@ module top$lanes$0$bilinear$wy_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$wy_q$2
-module top$lanes$0$bilinear$wy_q$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$bilinear$wy_q$3
 module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,wx,wy,out$0,out$1,out$2,out$3);
     
     // Module arguments
@@ -4398,9 +4559,18 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     output reg  [31:0] out$3;
     
     // Stub signals
-    reg  [15:0] wx_q$d;
-    wire  [15:0] wx_q$q;
-    reg  wx_q$clock;
+    reg  [15:0] wx_q$0$d;
+    wire  [15:0] wx_q$0$q;
+    reg  wx_q$0$clock;
+    reg  [15:0] wx_q$1$d;
+    wire  [15:0] wx_q$1$q;
+    reg  wx_q$1$clock;
+    reg  [15:0] wx_q$2$d;
+    wire  [15:0] wx_q$2$q;
+    reg  wx_q$2$clock;
+    reg  [15:0] wx_q$3$d;
+    wire  [15:0] wx_q$3$q;
+    reg  wx_q$3$clock;
     reg  [15:0] wy_q$0$d;
     wire  [15:0] wy_q$0$q;
     reg  wy_q$0$clock;
@@ -4410,9 +4580,18 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     reg  [15:0] wy_q$2$d;
     wire  [15:0] wy_q$2$q;
     reg  wy_q$2$clock;
-    reg  [15:0] wy_q$3$d;
-    wire  [15:0] wy_q$3$q;
-    reg  wy_q$3$clock;
+    reg  [15:0] wy_last$0$d;
+    wire  [15:0] wy_last$0$q;
+    reg  wy_last$0$clock;
+    reg  [15:0] wy_last$1$d;
+    wire  [15:0] wy_last$1$q;
+    reg  wy_last$1$clock;
+    reg  [15:0] wy_last$2$d;
+    wire  [15:0] wy_last$2$q;
+    reg  wy_last$2$clock;
+    reg  [15:0] wy_last$3$d;
+    wire  [15:0] wy_last$3$q;
+    reg  wy_last$3$clock;
     reg  ch$0$clock;
     reg  [31:0] ch$0$c00;
     reg  [31:0] ch$0$c10;
@@ -4447,10 +4626,25 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     wire  [31:0] ch$3$y;
     
     // Sub module instances
-    top$lanes$1$bilinear$wx_q wx_q(
-        .d(wx_q$d),
-        .q(wx_q$q),
-        .clock(wx_q$clock)
+    top$lanes$1$bilinear$wx_q$0 wx_q$0(
+        .d(wx_q$0$d),
+        .q(wx_q$0$q),
+        .clock(wx_q$0$clock)
+    );
+    top$lanes$1$bilinear$wx_q$1 wx_q$1(
+        .d(wx_q$1$d),
+        .q(wx_q$1$q),
+        .clock(wx_q$1$clock)
+    );
+    top$lanes$1$bilinear$wx_q$2 wx_q$2(
+        .d(wx_q$2$d),
+        .q(wx_q$2$q),
+        .clock(wx_q$2$clock)
+    );
+    top$lanes$1$bilinear$wx_q$3 wx_q$3(
+        .d(wx_q$3$d),
+        .q(wx_q$3$q),
+        .clock(wx_q$3$clock)
     );
     top$lanes$1$bilinear$wy_q$0 wy_q$0(
         .d(wy_q$0$d),
@@ -4467,10 +4661,25 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         .q(wy_q$2$q),
         .clock(wy_q$2$clock)
     );
-    top$lanes$1$bilinear$wy_q$3 wy_q$3(
-        .d(wy_q$3$d),
-        .q(wy_q$3$q),
-        .clock(wy_q$3$clock)
+    top$lanes$1$bilinear$wy_last$0 wy_last$0(
+        .d(wy_last$0$d),
+        .q(wy_last$0$q),
+        .clock(wy_last$0$clock)
+    );
+    top$lanes$1$bilinear$wy_last$1 wy_last$1(
+        .d(wy_last$1$d),
+        .q(wy_last$1$q),
+        .clock(wy_last$1$clock)
+    );
+    top$lanes$1$bilinear$wy_last$2 wy_last$2(
+        .d(wy_last$2$d),
+        .q(wy_last$2$q),
+        .clock(wy_last$2$clock)
+    );
+    top$lanes$1$bilinear$wy_last$3 wy_last$3(
+        .d(wy_last$3$d),
+        .q(wy_last$3$q),
+        .clock(wy_last$3$clock)
     );
     top$lanes$1$bilinear$ch$0 ch$0(
         .clock(ch$0$clock),
@@ -4515,48 +4724,59 @@ module top$lanes$1$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     
     // Update code
     always @(*) begin
-        wx_q$clock = clock;
-        wx_q$d = wx_q$q;
         wy_q$0$clock = clock;
         wy_q$1$clock = clock;
         wy_q$2$clock = clock;
-        wy_q$3$clock = clock;
-        wx_q$d = wx;
         wy_q$0$d = wy;
         wy_q$1$d = wy_q$0$q;
         wy_q$2$d = wy_q$1$q;
-        wy_q$3$d = wy_q$2$q;
+        wx_q$0$clock = clock;
+        wx_q$0$d = wx;
+        wy_last$0$clock = clock;
+        wy_last$0$d = wy_q$2$q;
         ch$0$clock = clock;
         ch$0$c00 = c00$0;
         ch$0$c10 = c10$0;
         ch$0$c01 = c01$0;
         ch$0$c11 = c11$0;
-        ch$0$wx = wx_q$q;
-        ch$0$wy = wy_q$3$q;
+        ch$0$wx = wx_q$0$q;
+        ch$0$wy = wy_last$0$q;
         out$0 = ch$0$y;
+        wx_q$1$clock = clock;
+        wx_q$1$d = wx;
+        wy_last$1$clock = clock;
+        wy_last$1$d = wy_q$2$q;
         ch$1$clock = clock;
         ch$1$c00 = c00$1;
         ch$1$c10 = c10$1;
         ch$1$c01 = c01$1;
         ch$1$c11 = c11$1;
-        ch$1$wx = wx_q$q;
-        ch$1$wy = wy_q$3$q;
+        ch$1$wx = wx_q$1$q;
+        ch$1$wy = wy_last$1$q;
         out$1 = ch$1$y;
+        wx_q$2$clock = clock;
+        wx_q$2$d = wx;
+        wy_last$2$clock = clock;
+        wy_last$2$d = wy_q$2$q;
         ch$2$clock = clock;
         ch$2$c00 = c00$2;
         ch$2$c10 = c10$2;
         ch$2$c01 = c01$2;
         ch$2$c11 = c11$2;
-        ch$2$wx = wx_q$q;
-        ch$2$wy = wy_q$3$q;
+        ch$2$wx = wx_q$2$q;
+        ch$2$wy = wy_last$2$q;
         out$2 = ch$2$y;
+        wx_q$3$clock = clock;
+        wx_q$3$d = wx;
+        wy_last$3$clock = clock;
+        wy_last$3$d = wy_q$2$q;
         ch$3$clock = clock;
         ch$3$c00 = c00$3;
         ch$3$c10 = c10$3;
         ch$3$c01 = c01$3;
         ch$3$c11 = c11$3;
-        ch$3$wx = wx_q$q;
-        ch$3$wy = wy_q$3$q;
+        ch$3$wx = wx_q$3$q;
+        ch$3$wy = wy_last$3$q;
         out$3 = ch$3$y;
     end
     
@@ -8657,7 +8877,7 @@ module top$lanes$1$bilinear$ch$3$vertical$y_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$vertical$y_q
-module top$lanes$1$bilinear$wx_q(d,q,clock);
+module top$lanes$1$bilinear$wx_q$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -8669,11 +8889,130 @@ module top$lanes$1$bilinear$wx_q(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
-endmodule // top$lanes$1$bilinear$wx_q
+endmodule // top$lanes$1$bilinear$wx_q$0
+module top$lanes$1$bilinear$wx_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$bilinear$wx_q$1
+module top$lanes$1$bilinear$wx_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$bilinear$wx_q$2
+module top$lanes$1$bilinear$wx_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$bilinear$wx_q$3
+module top$lanes$1$bilinear$wy_last$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$bilinear$wy_last$0
+module top$lanes$1$bilinear$wy_last$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$bilinear$wy_last$1
+module top$lanes$1$bilinear$wy_last$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$bilinear$wy_last$2
+module top$lanes$1$bilinear$wy_last$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$bilinear$wy_last$3
 module top$lanes$1$bilinear$wy_q$0(d,q,clock);
     
     // Module arguments
@@ -8725,23 +9064,6 @@ module top$lanes$1$bilinear$wy_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$wy_q$2
-module top$lanes$1$bilinear$wy_q$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$bilinear$wy_q$3
 module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,wx,wy,out$0,out$1,out$2,out$3);
     
     // Module arguments
@@ -8770,9 +9092,18 @@ module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     output reg  [31:0] out$3;
     
     // Stub signals
-    reg  [15:0] wx_q$d;
-    wire  [15:0] wx_q$q;
-    reg  wx_q$clock;
+    reg  [15:0] wx_q$0$d;
+    wire  [15:0] wx_q$0$q;
+    reg  wx_q$0$clock;
+    reg  [15:0] wx_q$1$d;
+    wire  [15:0] wx_q$1$q;
+    reg  wx_q$1$clock;
+    reg  [15:0] wx_q$2$d;
+    wire  [15:0] wx_q$2$q;
+    reg  wx_q$2$clock;
+    reg  [15:0] wx_q$3$d;
+    wire  [15:0] wx_q$3$q;
+    reg  wx_q$3$clock;
     reg  [15:0] wy_q$0$d;
     wire  [15:0] wy_q$0$q;
     reg  wy_q$0$clock;
@@ -8782,9 +9113,18 @@ module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     reg  [15:0] wy_q$2$d;
     wire  [15:0] wy_q$2$q;
     reg  wy_q$2$clock;
-    reg  [15:0] wy_q$3$d;
-    wire  [15:0] wy_q$3$q;
-    reg  wy_q$3$clock;
+    reg  [15:0] wy_last$0$d;
+    wire  [15:0] wy_last$0$q;
+    reg  wy_last$0$clock;
+    reg  [15:0] wy_last$1$d;
+    wire  [15:0] wy_last$1$q;
+    reg  wy_last$1$clock;
+    reg  [15:0] wy_last$2$d;
+    wire  [15:0] wy_last$2$q;
+    reg  wy_last$2$clock;
+    reg  [15:0] wy_last$3$d;
+    wire  [15:0] wy_last$3$q;
+    reg  wy_last$3$clock;
     reg  ch$0$clock;
     reg  [31:0] ch$0$c00;
     reg  [31:0] ch$0$c10;
@@ -8819,10 +9159,25 @@ module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     wire  [31:0] ch$3$y;
     
     // Sub module instances
-    top$lanes$2$bilinear$wx_q wx_q(
-        .d(wx_q$d),
-        .q(wx_q$q),
-        .clock(wx_q$clock)
+    top$lanes$2$bilinear$wx_q$0 wx_q$0(
+        .d(wx_q$0$d),
+        .q(wx_q$0$q),
+        .clock(wx_q$0$clock)
+    );
+    top$lanes$2$bilinear$wx_q$1 wx_q$1(
+        .d(wx_q$1$d),
+        .q(wx_q$1$q),
+        .clock(wx_q$1$clock)
+    );
+    top$lanes$2$bilinear$wx_q$2 wx_q$2(
+        .d(wx_q$2$d),
+        .q(wx_q$2$q),
+        .clock(wx_q$2$clock)
+    );
+    top$lanes$2$bilinear$wx_q$3 wx_q$3(
+        .d(wx_q$3$d),
+        .q(wx_q$3$q),
+        .clock(wx_q$3$clock)
     );
     top$lanes$2$bilinear$wy_q$0 wy_q$0(
         .d(wy_q$0$d),
@@ -8839,10 +9194,25 @@ module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         .q(wy_q$2$q),
         .clock(wy_q$2$clock)
     );
-    top$lanes$2$bilinear$wy_q$3 wy_q$3(
-        .d(wy_q$3$d),
-        .q(wy_q$3$q),
-        .clock(wy_q$3$clock)
+    top$lanes$2$bilinear$wy_last$0 wy_last$0(
+        .d(wy_last$0$d),
+        .q(wy_last$0$q),
+        .clock(wy_last$0$clock)
+    );
+    top$lanes$2$bilinear$wy_last$1 wy_last$1(
+        .d(wy_last$1$d),
+        .q(wy_last$1$q),
+        .clock(wy_last$1$clock)
+    );
+    top$lanes$2$bilinear$wy_last$2 wy_last$2(
+        .d(wy_last$2$d),
+        .q(wy_last$2$q),
+        .clock(wy_last$2$clock)
+    );
+    top$lanes$2$bilinear$wy_last$3 wy_last$3(
+        .d(wy_last$3$d),
+        .q(wy_last$3$q),
+        .clock(wy_last$3$clock)
     );
     top$lanes$2$bilinear$ch$0 ch$0(
         .clock(ch$0$clock),
@@ -8887,48 +9257,59 @@ module top$lanes$2$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     
     // Update code
     always @(*) begin
-        wx_q$clock = clock;
-        wx_q$d = wx_q$q;
         wy_q$0$clock = clock;
         wy_q$1$clock = clock;
         wy_q$2$clock = clock;
-        wy_q$3$clock = clock;
-        wx_q$d = wx;
         wy_q$0$d = wy;
         wy_q$1$d = wy_q$0$q;
         wy_q$2$d = wy_q$1$q;
-        wy_q$3$d = wy_q$2$q;
+        wx_q$0$clock = clock;
+        wx_q$0$d = wx;
+        wy_last$0$clock = clock;
+        wy_last$0$d = wy_q$2$q;
         ch$0$clock = clock;
         ch$0$c00 = c00$0;
         ch$0$c10 = c10$0;
         ch$0$c01 = c01$0;
         ch$0$c11 = c11$0;
-        ch$0$wx = wx_q$q;
-        ch$0$wy = wy_q$3$q;
+        ch$0$wx = wx_q$0$q;
+        ch$0$wy = wy_last$0$q;
         out$0 = ch$0$y;
+        wx_q$1$clock = clock;
+        wx_q$1$d = wx;
+        wy_last$1$clock = clock;
+        wy_last$1$d = wy_q$2$q;
         ch$1$clock = clock;
         ch$1$c00 = c00$1;
         ch$1$c10 = c10$1;
         ch$1$c01 = c01$1;
         ch$1$c11 = c11$1;
-        ch$1$wx = wx_q$q;
-        ch$1$wy = wy_q$3$q;
+        ch$1$wx = wx_q$1$q;
+        ch$1$wy = wy_last$1$q;
         out$1 = ch$1$y;
+        wx_q$2$clock = clock;
+        wx_q$2$d = wx;
+        wy_last$2$clock = clock;
+        wy_last$2$d = wy_q$2$q;
         ch$2$clock = clock;
         ch$2$c00 = c00$2;
         ch$2$c10 = c10$2;
         ch$2$c01 = c01$2;
         ch$2$c11 = c11$2;
-        ch$2$wx = wx_q$q;
-        ch$2$wy = wy_q$3$q;
+        ch$2$wx = wx_q$2$q;
+        ch$2$wy = wy_last$2$q;
         out$2 = ch$2$y;
+        wx_q$3$clock = clock;
+        wx_q$3$d = wx;
+        wy_last$3$clock = clock;
+        wy_last$3$d = wy_q$2$q;
         ch$3$clock = clock;
         ch$3$c00 = c00$3;
         ch$3$c10 = c10$3;
         ch$3$c01 = c01$3;
         ch$3$c11 = c11$3;
-        ch$3$wx = wx_q$q;
-        ch$3$wy = wy_q$3$q;
+        ch$3$wx = wx_q$3$q;
+        ch$3$wy = wy_last$3$q;
         out$3 = ch$3$y;
     end
     
@@ -13029,7 +13410,7 @@ module top$lanes$2$bilinear$ch$3$vertical$y_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$3$vertical$y_q
-module top$lanes$2$bilinear$wx_q(d,q,clock);
+module top$lanes$2$bilinear$wx_q$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -13041,11 +13422,130 @@ module top$lanes$2$bilinear$wx_q(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
-endmodule // top$lanes$2$bilinear$wx_q
+endmodule // top$lanes$2$bilinear$wx_q$0
+module top$lanes$2$bilinear$wx_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$bilinear$wx_q$1
+module top$lanes$2$bilinear$wx_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$bilinear$wx_q$2
+module top$lanes$2$bilinear$wx_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$bilinear$wx_q$3
+module top$lanes$2$bilinear$wy_last$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$bilinear$wy_last$0
+module top$lanes$2$bilinear$wy_last$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$bilinear$wy_last$1
+module top$lanes$2$bilinear$wy_last$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$bilinear$wy_last$2
+module top$lanes$2$bilinear$wy_last$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$bilinear$wy_last$3
 module top$lanes$2$bilinear$wy_q$0(d,q,clock);
     
     // Module arguments
@@ -13097,23 +13597,6 @@ module top$lanes$2$bilinear$wy_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$wy_q$2
-module top$lanes$2$bilinear$wy_q$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$bilinear$wy_q$3
 module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,wx,wy,out$0,out$1,out$2,out$3);
     
     // Module arguments
@@ -13142,9 +13625,18 @@ module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     output reg  [31:0] out$3;
     
     // Stub signals
-    reg  [15:0] wx_q$d;
-    wire  [15:0] wx_q$q;
-    reg  wx_q$clock;
+    reg  [15:0] wx_q$0$d;
+    wire  [15:0] wx_q$0$q;
+    reg  wx_q$0$clock;
+    reg  [15:0] wx_q$1$d;
+    wire  [15:0] wx_q$1$q;
+    reg  wx_q$1$clock;
+    reg  [15:0] wx_q$2$d;
+    wire  [15:0] wx_q$2$q;
+    reg  wx_q$2$clock;
+    reg  [15:0] wx_q$3$d;
+    wire  [15:0] wx_q$3$q;
+    reg  wx_q$3$clock;
     reg  [15:0] wy_q$0$d;
     wire  [15:0] wy_q$0$q;
     reg  wy_q$0$clock;
@@ -13154,9 +13646,18 @@ module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     reg  [15:0] wy_q$2$d;
     wire  [15:0] wy_q$2$q;
     reg  wy_q$2$clock;
-    reg  [15:0] wy_q$3$d;
-    wire  [15:0] wy_q$3$q;
-    reg  wy_q$3$clock;
+    reg  [15:0] wy_last$0$d;
+    wire  [15:0] wy_last$0$q;
+    reg  wy_last$0$clock;
+    reg  [15:0] wy_last$1$d;
+    wire  [15:0] wy_last$1$q;
+    reg  wy_last$1$clock;
+    reg  [15:0] wy_last$2$d;
+    wire  [15:0] wy_last$2$q;
+    reg  wy_last$2$clock;
+    reg  [15:0] wy_last$3$d;
+    wire  [15:0] wy_last$3$q;
+    reg  wy_last$3$clock;
     reg  ch$0$clock;
     reg  [31:0] ch$0$c00;
     reg  [31:0] ch$0$c10;
@@ -13191,10 +13692,25 @@ module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     wire  [31:0] ch$3$y;
     
     // Sub module instances
-    top$lanes$3$bilinear$wx_q wx_q(
-        .d(wx_q$d),
-        .q(wx_q$q),
-        .clock(wx_q$clock)
+    top$lanes$3$bilinear$wx_q$0 wx_q$0(
+        .d(wx_q$0$d),
+        .q(wx_q$0$q),
+        .clock(wx_q$0$clock)
+    );
+    top$lanes$3$bilinear$wx_q$1 wx_q$1(
+        .d(wx_q$1$d),
+        .q(wx_q$1$q),
+        .clock(wx_q$1$clock)
+    );
+    top$lanes$3$bilinear$wx_q$2 wx_q$2(
+        .d(wx_q$2$d),
+        .q(wx_q$2$q),
+        .clock(wx_q$2$clock)
+    );
+    top$lanes$3$bilinear$wx_q$3 wx_q$3(
+        .d(wx_q$3$d),
+        .q(wx_q$3$q),
+        .clock(wx_q$3$clock)
     );
     top$lanes$3$bilinear$wy_q$0 wy_q$0(
         .d(wy_q$0$d),
@@ -13211,10 +13727,25 @@ module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
         .q(wy_q$2$q),
         .clock(wy_q$2$clock)
     );
-    top$lanes$3$bilinear$wy_q$3 wy_q$3(
-        .d(wy_q$3$d),
-        .q(wy_q$3$q),
-        .clock(wy_q$3$clock)
+    top$lanes$3$bilinear$wy_last$0 wy_last$0(
+        .d(wy_last$0$d),
+        .q(wy_last$0$q),
+        .clock(wy_last$0$clock)
+    );
+    top$lanes$3$bilinear$wy_last$1 wy_last$1(
+        .d(wy_last$1$d),
+        .q(wy_last$1$q),
+        .clock(wy_last$1$clock)
+    );
+    top$lanes$3$bilinear$wy_last$2 wy_last$2(
+        .d(wy_last$2$d),
+        .q(wy_last$2$q),
+        .clock(wy_last$2$clock)
+    );
+    top$lanes$3$bilinear$wy_last$3 wy_last$3(
+        .d(wy_last$3$d),
+        .q(wy_last$3$q),
+        .clock(wy_last$3$clock)
     );
     top$lanes$3$bilinear$ch$0 ch$0(
         .clock(ch$0$clock),
@@ -13259,48 +13790,59 @@ module top$lanes$3$bilinear(clock,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$
     
     // Update code
     always @(*) begin
-        wx_q$clock = clock;
-        wx_q$d = wx_q$q;
         wy_q$0$clock = clock;
         wy_q$1$clock = clock;
         wy_q$2$clock = clock;
-        wy_q$3$clock = clock;
-        wx_q$d = wx;
         wy_q$0$d = wy;
         wy_q$1$d = wy_q$0$q;
         wy_q$2$d = wy_q$1$q;
-        wy_q$3$d = wy_q$2$q;
+        wx_q$0$clock = clock;
+        wx_q$0$d = wx;
+        wy_last$0$clock = clock;
+        wy_last$0$d = wy_q$2$q;
         ch$0$clock = clock;
         ch$0$c00 = c00$0;
         ch$0$c10 = c10$0;
         ch$0$c01 = c01$0;
         ch$0$c11 = c11$0;
-        ch$0$wx = wx_q$q;
-        ch$0$wy = wy_q$3$q;
+        ch$0$wx = wx_q$0$q;
+        ch$0$wy = wy_last$0$q;
         out$0 = ch$0$y;
+        wx_q$1$clock = clock;
+        wx_q$1$d = wx;
+        wy_last$1$clock = clock;
+        wy_last$1$d = wy_q$2$q;
         ch$1$clock = clock;
         ch$1$c00 = c00$1;
         ch$1$c10 = c10$1;
         ch$1$c01 = c01$1;
         ch$1$c11 = c11$1;
-        ch$1$wx = wx_q$q;
-        ch$1$wy = wy_q$3$q;
+        ch$1$wx = wx_q$1$q;
+        ch$1$wy = wy_last$1$q;
         out$1 = ch$1$y;
+        wx_q$2$clock = clock;
+        wx_q$2$d = wx;
+        wy_last$2$clock = clock;
+        wy_last$2$d = wy_q$2$q;
         ch$2$clock = clock;
         ch$2$c00 = c00$2;
         ch$2$c10 = c10$2;
         ch$2$c01 = c01$2;
         ch$2$c11 = c11$2;
-        ch$2$wx = wx_q$q;
-        ch$2$wy = wy_q$3$q;
+        ch$2$wx = wx_q$2$q;
+        ch$2$wy = wy_last$2$q;
         out$2 = ch$2$y;
+        wx_q$3$clock = clock;
+        wx_q$3$d = wx;
+        wy_last$3$clock = clock;
+        wy_last$3$d = wy_q$2$q;
         ch$3$clock = clock;
         ch$3$c00 = c00$3;
         ch$3$c10 = c10$3;
         ch$3$c01 = c01$3;
         ch$3$c11 = c11$3;
-        ch$3$wx = wx_q$q;
-        ch$3$wy = wy_q$3$q;
+        ch$3$wx = wx_q$3$q;
+        ch$3$wy = wy_last$3$q;
         out$3 = ch$3$y;
     end
     
@@ -17401,7 +17943,7 @@ module top$lanes$3$bilinear$ch$3$vertical$y_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$3$vertical$y_q
-module top$lanes$3$bilinear$wx_q(d,q,clock);
+module top$lanes$3$bilinear$wx_q$0(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -17413,11 +17955,130 @@ module top$lanes$3$bilinear$wx_q(d,q,clock);
        q = 16'h0;
     end
     
+    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
-          
-endmodule // top$lanes$3$bilinear$wx_q
+endmodule // top$lanes$3$bilinear$wx_q$0
+module top$lanes$3$bilinear$wx_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$bilinear$wx_q$1
+module top$lanes$3$bilinear$wx_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$bilinear$wx_q$2
+module top$lanes$3$bilinear$wx_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$bilinear$wx_q$3
+module top$lanes$3$bilinear$wy_last$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$bilinear$wy_last$0
+module top$lanes$3$bilinear$wy_last$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$bilinear$wy_last$1
+module top$lanes$3$bilinear$wy_last$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$bilinear$wy_last$2
+module top$lanes$3$bilinear$wy_last$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$bilinear$wy_last$3
 module top$lanes$3$bilinear$wy_q$0(d,q,clock);
     
     // Module arguments
@@ -17469,20 +18130,3 @@ module top$lanes$3$bilinear$wy_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$wy_q$2
-module top$lanes$3$bilinear$wy_q$3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$bilinear$wy_q$3

@@ -360,6 +360,18 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] nb_d4$d;
     wire  [15:0] nb_d4$q;
     reg  nb_d4$clock;
+    reg  run_d5$d;
+    wire  run_d5$q;
+    reg  run_d5$clock;
+    reg  [15:0] ns_d5$d;
+    wire  [15:0] ns_d5$q;
+    reg  ns_d5$clock;
+    reg  [15:0] nbeam_d5$d;
+    wire  [15:0] nbeam_d5$q;
+    reg  nbeam_d5$clock;
+    reg  [15:0] nb_d5$d;
+    wire  [15:0] nb_d5$q;
+    reg  nb_d5$clock;
     reg  valid_q$d;
     wire  valid_q$q;
     reg  valid_q$clock;
@@ -702,6 +714,26 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .q(nb_d4$q),
         .clock(nb_d4$clock)
     );
+    top$cfb$run_d5 run_d5(
+        .d(run_d5$d),
+        .q(run_d5$q),
+        .clock(run_d5$clock)
+    );
+    top$cfb$ns_d5 ns_d5(
+        .d(ns_d5$d),
+        .q(ns_d5$q),
+        .clock(ns_d5$clock)
+    );
+    top$cfb$nbeam_d5 nbeam_d5(
+        .d(nbeam_d5$d),
+        .q(nbeam_d5$q),
+        .clock(nbeam_d5$clock)
+    );
+    top$cfb$nb_d5 nb_d5(
+        .d(nb_d5$d),
+        .q(nb_d5$q),
+        .clock(nb_d5$clock)
+    );
     top$cfb$valid_q valid_q(
         .d(valid_q$d),
         .q(valid_q$q),
@@ -800,6 +832,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_d2$clock = clock;
         nb_d3$clock = clock;
         nb_d4$clock = clock;
+        run_d5$clock = clock;
+        ns_d5$clock = clock;
+        nbeam_d5$clock = clock;
+        nb_d5$clock = clock;
         ny_last$clock = clock;
         b_last$clock = clock;
         nb_left$clock = clock;
@@ -834,6 +870,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_d2$d = nb_d2$q;
         nb_d3$d = nb_d3$q;
         nb_d4$d = nb_d4$q;
+        run_d5$d = run_d5$q;
+        ns_d5$d = ns_d5$q;
+        nbeam_d5$d = nbeam_d5$q;
+        nb_d5$d = nb_d5$q;
         ny_last$d = ny_last$q;
         b_last$d = b_last$q;
         nb_left$d = nb_left$q;
@@ -876,6 +916,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         ns_d4$d = ns_d3$q;
         nbeam_d4$d = nbeam_d3$q;
         nb_d4$d = nb_d3$q;
+        run_d5$d = run_d4$q;
+        ns_d5$d = ns_d4$q;
+        nbeam_d5$d = nbeam_d4$q;
+        nb_d5$d = nb_d4$q;
         z0 = slices[('h20)+:(16)];
         z1 = slices[('h30)+:(16)];
         ny_m1 = dims[('h10)+:(16)] - 'h1;
@@ -900,11 +944,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$0$a_n_s = e_ns;
         lanes$0$a_n_beam = e_nbeam;
         lanes$0$a_n_b = e_nb;
-        lanes$0$c_n_s = ns_d3$q;
-        lanes$0$c_n_beam = nbeam_d3$q;
-        lanes$0$c_n_b = nb_d3$q;
-        lanes$0$n_s = ns_d4$q;
-        lanes$0$n_beam = nbeam_d4$q;
+        lanes$0$c_n_s = ns_d4$q;
+        lanes$0$c_n_beam = nbeam_d4$q;
+        lanes$0$c_n_b = nb_d4$q;
+        lanes$0$n_s = ns_d5$q;
+        lanes$0$n_beam = nbeam_d5$q;
         lanes$0$load_enable = load_enable;
         lanes$0$load_module = load_module;
         lanes$0$load_address = load_address;
@@ -945,11 +989,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$1$a_n_s = e_ns;
         lanes$1$a_n_beam = e_nbeam;
         lanes$1$a_n_b = e_nb;
-        lanes$1$c_n_s = ns_d3$q;
-        lanes$1$c_n_beam = nbeam_d3$q;
-        lanes$1$c_n_b = nb_d3$q;
-        lanes$1$n_s = ns_d4$q;
-        lanes$1$n_beam = nbeam_d4$q;
+        lanes$1$c_n_s = ns_d4$q;
+        lanes$1$c_n_beam = nbeam_d4$q;
+        lanes$1$c_n_b = nb_d4$q;
+        lanes$1$n_s = ns_d5$q;
+        lanes$1$n_beam = nbeam_d5$q;
         lanes$1$load_enable = load_enable;
         lanes$1$load_module = load_module;
         lanes$1$load_address = load_address;
@@ -990,11 +1034,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$2$a_n_s = e_ns;
         lanes$2$a_n_beam = e_nbeam;
         lanes$2$a_n_b = e_nb;
-        lanes$2$c_n_s = ns_d3$q;
-        lanes$2$c_n_beam = nbeam_d3$q;
-        lanes$2$c_n_b = nb_d3$q;
-        lanes$2$n_s = ns_d4$q;
-        lanes$2$n_beam = nbeam_d4$q;
+        lanes$2$c_n_s = ns_d4$q;
+        lanes$2$c_n_beam = nbeam_d4$q;
+        lanes$2$c_n_b = nb_d4$q;
+        lanes$2$n_s = ns_d5$q;
+        lanes$2$n_beam = nbeam_d5$q;
         lanes$2$load_enable = load_enable;
         lanes$2$load_module = load_module;
         lanes$2$load_address = load_address;
@@ -1035,11 +1079,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$3$a_n_s = e_ns;
         lanes$3$a_n_beam = e_nbeam;
         lanes$3$a_n_b = e_nb;
-        lanes$3$c_n_s = ns_d3$q;
-        lanes$3$c_n_beam = nbeam_d3$q;
-        lanes$3$c_n_b = nb_d3$q;
-        lanes$3$n_s = ns_d4$q;
-        lanes$3$n_beam = nbeam_d4$q;
+        lanes$3$c_n_s = ns_d4$q;
+        lanes$3$c_n_beam = nbeam_d4$q;
+        lanes$3$c_n_b = nb_d4$q;
+        lanes$3$n_s = ns_d5$q;
+        lanes$3$n_beam = nbeam_d5$q;
         lanes$3$load_enable = load_enable;
         lanes$3$load_module = load_module;
         lanes$3$load_address = load_address;
@@ -1109,10 +1153,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         if (reset) begin
             running$d = 1'b0;
         end
-        valid_q$d = run_d4$q;
-        ns_q$d = ns_d4$q;
-        nbeam_q$d = nbeam_d4$q;
-        nb_q$d = nb_d4$q;
+        valid_q$d = run_d5$q;
+        ns_q$d = ns_d5$q;
+        nbeam_q$d = nbeam_d5$q;
+        nb_q$d = nb_d5$q;
         busy_pass = running$q;
         if (perspective) begin
             busy_pass = lead$busy;
@@ -1224,6 +1268,21 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -1251,8 +1310,8 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -1260,8 +1319,8 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -1274,9 +1333,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg = 'h0;
-    wire  [31:0] div$dx_mag = 'h0;
+    wire  [15:0] div$dx_mag = 'h0;
+    wire  div$dx_pos = 'h0;
     wire  div$dy_neg = 'h0;
-    wire  [31:0] div$dy_mag = 'h0;
+    wire  [15:0] div$dy_mag = 'h0;
+    wire  div$dy_pos = 'h0;
     wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -1377,12 +1438,18 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -1405,12 +1472,12 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -1434,6 +1501,31 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$0$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$cfb$lanes$0$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$cfb$lanes$0$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$cfb$lanes$0$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$cfb$lanes$0$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$cfb$lanes$0$nx nx(
         .d(nx$d),
@@ -1670,6 +1762,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$cfb$lanes$0$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$cfb$lanes$0$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -1679,6 +1776,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$cfb$lanes$0$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$cfb$lanes$0$sr_q sr_q(
         .d(sr_q$d),
@@ -1714,8 +1816,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -1753,6 +1857,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -1768,8 +1877,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -1807,6 +1918,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -1817,33 +1933,38 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -1921,10 +2042,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -1968,6 +2089,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -1975,15 +2097,16 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -1991,7 +2114,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -2128,6 +2251,23 @@ module top$cfb$lanes$0$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$addr_q2
+module top$cfb$lanes$0$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$addr_q3
 module top$cfb$lanes$0$b_near_r(d,q,clock);
     
     // Module arguments
@@ -2383,6 +2523,23 @@ module top$cfb$lanes$0$ext_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$ext_q
+module top$cfb$lanes$0$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$ext_q2
 module top$cfb$lanes$0$face_q(d,q,clock);
     
     // Module arguments
@@ -2666,13 +2823,13 @@ endmodule // top$cfb$lanes$0$par_dx_pos
 module top$cfb$lanes$0$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -2717,13 +2874,13 @@ endmodule // top$cfb$lanes$0$par_dy_pos
 module top$cfb$lanes$0$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -2816,6 +2973,91 @@ module top$cfb$lanes$0$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$sr_q
+module top$cfb$lanes$0$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_axes
+module top$cfb$lanes$0$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_dims
+module top$cfb$lanes$0$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_dx
+module top$cfb$lanes$0$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_dy
+module top$cfb$lanes$0$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_slices
 module top$cfb$lanes$0$x_first_r(d,q,clock);
     
     // Module arguments
@@ -3016,6 +3258,21 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -3043,8 +3300,8 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -3052,8 +3309,8 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -3066,9 +3323,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg = 'h0;
-    wire  [31:0] div$dx_mag = 'h0;
+    wire  [15:0] div$dx_mag = 'h0;
+    wire  div$dx_pos = 'h0;
     wire  div$dy_neg = 'h0;
-    wire  [31:0] div$dy_mag = 'h0;
+    wire  [15:0] div$dy_mag = 'h0;
+    wire  div$dy_pos = 'h0;
     wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -3169,12 +3428,18 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -3197,12 +3462,12 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -3226,6 +3491,31 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$1$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$cfb$lanes$1$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$cfb$lanes$1$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$cfb$lanes$1$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$cfb$lanes$1$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$cfb$lanes$1$nx nx(
         .d(nx$d),
@@ -3462,6 +3752,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$cfb$lanes$1$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$cfb$lanes$1$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -3471,6 +3766,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$cfb$lanes$1$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$cfb$lanes$1$sr_q sr_q(
         .d(sr_q$d),
@@ -3506,8 +3806,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -3545,6 +3847,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -3560,8 +3867,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -3599,6 +3908,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -3609,33 +3923,38 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -3713,10 +4032,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -3760,6 +4079,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -3767,15 +4087,16 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -3783,7 +4104,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -3920,6 +4241,23 @@ module top$cfb$lanes$1$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$addr_q2
+module top$cfb$lanes$1$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$addr_q3
 module top$cfb$lanes$1$b_near_r(d,q,clock);
     
     // Module arguments
@@ -4175,6 +4513,23 @@ module top$cfb$lanes$1$ext_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$ext_q
+module top$cfb$lanes$1$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$ext_q2
 module top$cfb$lanes$1$face_q(d,q,clock);
     
     // Module arguments
@@ -4458,13 +4813,13 @@ endmodule // top$cfb$lanes$1$par_dx_pos
 module top$cfb$lanes$1$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -4509,13 +4864,13 @@ endmodule // top$cfb$lanes$1$par_dy_pos
 module top$cfb$lanes$1$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -4608,6 +4963,91 @@ module top$cfb$lanes$1$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$sr_q
+module top$cfb$lanes$1$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_axes
+module top$cfb$lanes$1$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_dims
+module top$cfb$lanes$1$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_dx
+module top$cfb$lanes$1$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_dy
+module top$cfb$lanes$1$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_slices
 module top$cfb$lanes$1$x_first_r(d,q,clock);
     
     // Module arguments
@@ -4808,6 +5248,21 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -4835,8 +5290,8 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -4844,8 +5299,8 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -4858,9 +5313,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg = 'h0;
-    wire  [31:0] div$dx_mag = 'h0;
+    wire  [15:0] div$dx_mag = 'h0;
+    wire  div$dx_pos = 'h0;
     wire  div$dy_neg = 'h0;
-    wire  [31:0] div$dy_mag = 'h0;
+    wire  [15:0] div$dy_mag = 'h0;
+    wire  div$dy_pos = 'h0;
     wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -4961,12 +5418,18 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -4989,12 +5452,12 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -5018,6 +5481,31 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$2$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$cfb$lanes$2$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$cfb$lanes$2$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$cfb$lanes$2$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$cfb$lanes$2$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$cfb$lanes$2$nx nx(
         .d(nx$d),
@@ -5254,6 +5742,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$cfb$lanes$2$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$cfb$lanes$2$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -5263,6 +5756,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$cfb$lanes$2$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$cfb$lanes$2$sr_q sr_q(
         .d(sr_q$d),
@@ -5298,8 +5796,10 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -5337,6 +5837,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -5352,8 +5857,10 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -5391,6 +5898,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -5401,33 +5913,38 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -5505,10 +6022,10 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -5552,6 +6069,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -5559,15 +6077,16 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -5575,7 +6094,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -5712,6 +6231,23 @@ module top$cfb$lanes$2$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$addr_q2
+module top$cfb$lanes$2$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$addr_q3
 module top$cfb$lanes$2$b_near_r(d,q,clock);
     
     // Module arguments
@@ -5967,6 +6503,23 @@ module top$cfb$lanes$2$ext_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$ext_q
+module top$cfb$lanes$2$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$ext_q2
 module top$cfb$lanes$2$face_q(d,q,clock);
     
     // Module arguments
@@ -6250,13 +6803,13 @@ endmodule // top$cfb$lanes$2$par_dx_pos
 module top$cfb$lanes$2$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -6301,13 +6854,13 @@ endmodule // top$cfb$lanes$2$par_dy_pos
 module top$cfb$lanes$2$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -6400,6 +6953,91 @@ module top$cfb$lanes$2$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$sr_q
+module top$cfb$lanes$2$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$view_axes
+module top$cfb$lanes$2$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$view_dims
+module top$cfb$lanes$2$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$view_dx
+module top$cfb$lanes$2$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$view_dy
+module top$cfb$lanes$2$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$view_slices
 module top$cfb$lanes$2$x_first_r(d,q,clock);
     
     // Module arguments
@@ -6600,6 +7238,21 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -6627,8 +7280,8 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -6636,8 +7289,8 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -6650,9 +7303,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg = 'h0;
-    wire  [31:0] div$dx_mag = 'h0;
+    wire  [15:0] div$dx_mag = 'h0;
+    wire  div$dx_pos = 'h0;
     wire  div$dy_neg = 'h0;
-    wire  [31:0] div$dy_mag = 'h0;
+    wire  [15:0] div$dy_mag = 'h0;
+    wire  div$dy_pos = 'h0;
     wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -6753,12 +7408,18 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -6781,12 +7442,12 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -6810,6 +7471,31 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$3$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$cfb$lanes$3$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$cfb$lanes$3$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$cfb$lanes$3$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$cfb$lanes$3$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$cfb$lanes$3$nx nx(
         .d(nx$d),
@@ -7046,6 +7732,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$cfb$lanes$3$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$cfb$lanes$3$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -7055,6 +7746,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$cfb$lanes$3$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$cfb$lanes$3$sr_q sr_q(
         .d(sr_q$d),
@@ -7090,8 +7786,10 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -7129,6 +7827,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -7144,8 +7847,10 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -7183,6 +7888,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -7193,33 +7903,38 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -7297,10 +8012,10 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -7344,6 +8059,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -7351,15 +8067,16 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -7367,7 +8084,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -7504,6 +8221,23 @@ module top$cfb$lanes$3$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$addr_q2
+module top$cfb$lanes$3$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$addr_q3
 module top$cfb$lanes$3$b_near_r(d,q,clock);
     
     // Module arguments
@@ -7759,6 +8493,23 @@ module top$cfb$lanes$3$ext_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$ext_q
+module top$cfb$lanes$3$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$ext_q2
 module top$cfb$lanes$3$face_q(d,q,clock);
     
     // Module arguments
@@ -8042,13 +8793,13 @@ endmodule // top$cfb$lanes$3$par_dx_pos
 module top$cfb$lanes$3$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -8093,13 +8844,13 @@ endmodule // top$cfb$lanes$3$par_dy_pos
 module top$cfb$lanes$3$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -8192,6 +8943,91 @@ module top$cfb$lanes$3$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$sr_q
+module top$cfb$lanes$3$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$view_axes
+module top$cfb$lanes$3$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$view_dims
+module top$cfb$lanes$3$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$view_dx
+module top$cfb$lanes$3$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$view_dy
+module top$cfb$lanes$3$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$view_slices
 module top$cfb$lanes$3$x_first_r(d,q,clock);
     
     // Module arguments
@@ -8413,6 +9249,23 @@ module top$cfb$nb_d4(d,q,clock);
     end
           
 endmodule // top$cfb$nb_d4
+module top$cfb$nb_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nb_d5
 module top$cfb$nb_end(d,q,clock);
     
     // Module arguments
@@ -8549,6 +9402,23 @@ module top$cfb$nbeam_d4(d,q,clock);
     end
           
 endmodule // top$cfb$nbeam_d4
+module top$cfb$nbeam_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nbeam_d5
 module top$cfb$nbeam_end(d,q,clock);
     
     // Module arguments
@@ -8685,6 +9555,23 @@ module top$cfb$ns_d4(d,q,clock);
     end
           
 endmodule // top$cfb$ns_d4
+module top$cfb$ns_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ns_d5
 module top$cfb$ns_end(d,q,clock);
     
     // Module arguments
@@ -8838,6 +9725,23 @@ module top$cfb$run_d4(d,q,clock);
     end
           
 endmodule // top$cfb$run_d4
+module top$cfb$run_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$run_d5
 module top$cfb$running(d,q,clock);
     
     // Module arguments
@@ -9234,6 +10138,18 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
     reg  [15:0] nb_d4$d;
     wire  [15:0] nb_d4$q;
     reg  nb_d4$clock;
+    reg  run_d5$d;
+    wire  run_d5$q;
+    reg  run_d5$clock;
+    reg  [15:0] ns_d5$d;
+    wire  [15:0] ns_d5$q;
+    reg  ns_d5$clock;
+    reg  [15:0] nbeam_d5$d;
+    wire  [15:0] nbeam_d5$q;
+    reg  nbeam_d5$clock;
+    reg  [15:0] nb_d5$d;
+    wire  [15:0] nb_d5$q;
+    reg  nb_d5$clock;
     reg  valid_q$d;
     wire  valid_q$q;
     reg  valid_q$clock;
@@ -9576,6 +10492,26 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         .q(nb_d4$q),
         .clock(nb_d4$clock)
     );
+    top$late$run_d5 run_d5(
+        .d(run_d5$d),
+        .q(run_d5$q),
+        .clock(run_d5$clock)
+    );
+    top$late$ns_d5 ns_d5(
+        .d(ns_d5$d),
+        .q(ns_d5$q),
+        .clock(ns_d5$clock)
+    );
+    top$late$nbeam_d5 nbeam_d5(
+        .d(nbeam_d5$d),
+        .q(nbeam_d5$q),
+        .clock(nbeam_d5$clock)
+    );
+    top$late$nb_d5 nb_d5(
+        .d(nb_d5$d),
+        .q(nb_d5$q),
+        .clock(nb_d5$clock)
+    );
     top$late$valid_q valid_q(
         .d(valid_q$d),
         .q(valid_q$q),
@@ -9674,6 +10610,10 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         nb_d2$clock = clock;
         nb_d3$clock = clock;
         nb_d4$clock = clock;
+        run_d5$clock = clock;
+        ns_d5$clock = clock;
+        nbeam_d5$clock = clock;
+        nb_d5$clock = clock;
         ny_last$clock = clock;
         b_last$clock = clock;
         nb_left$clock = clock;
@@ -9708,6 +10648,10 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         nb_d2$d = nb_d2$q;
         nb_d3$d = nb_d3$q;
         nb_d4$d = nb_d4$q;
+        run_d5$d = run_d5$q;
+        ns_d5$d = ns_d5$q;
+        nbeam_d5$d = nbeam_d5$q;
+        nb_d5$d = nb_d5$q;
         ny_last$d = ny_last$q;
         b_last$d = b_last$q;
         nb_left$d = nb_left$q;
@@ -9750,6 +10694,10 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         ns_d4$d = ns_d3$q;
         nbeam_d4$d = nbeam_d3$q;
         nb_d4$d = nb_d3$q;
+        run_d5$d = run_d4$q;
+        ns_d5$d = ns_d4$q;
+        nbeam_d5$d = nbeam_d4$q;
+        nb_d5$d = nb_d4$q;
         z0 = slices[('h20)+:(16)];
         z1 = slices[('h30)+:(16)];
         ny_m1 = dims[('h10)+:(16)] - 'h1;
@@ -9774,11 +10722,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         lanes$0$a_n_s = e_ns;
         lanes$0$a_n_beam = e_nbeam;
         lanes$0$a_n_b = e_nb;
-        lanes$0$c_n_s = ns_d3$q;
-        lanes$0$c_n_beam = nbeam_d3$q;
-        lanes$0$c_n_b = nb_d3$q;
-        lanes$0$n_s = ns_d4$q;
-        lanes$0$n_beam = nbeam_d4$q;
+        lanes$0$c_n_s = ns_d4$q;
+        lanes$0$c_n_beam = nbeam_d4$q;
+        lanes$0$c_n_b = nb_d4$q;
+        lanes$0$n_s = ns_d5$q;
+        lanes$0$n_beam = nbeam_d5$q;
         lanes$0$load_enable = load_enable;
         lanes$0$load_module = load_module;
         lanes$0$load_address = load_address;
@@ -9819,11 +10767,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         lanes$1$a_n_s = e_ns;
         lanes$1$a_n_beam = e_nbeam;
         lanes$1$a_n_b = e_nb;
-        lanes$1$c_n_s = ns_d3$q;
-        lanes$1$c_n_beam = nbeam_d3$q;
-        lanes$1$c_n_b = nb_d3$q;
-        lanes$1$n_s = ns_d4$q;
-        lanes$1$n_beam = nbeam_d4$q;
+        lanes$1$c_n_s = ns_d4$q;
+        lanes$1$c_n_beam = nbeam_d4$q;
+        lanes$1$c_n_b = nb_d4$q;
+        lanes$1$n_s = ns_d5$q;
+        lanes$1$n_beam = nbeam_d5$q;
         lanes$1$load_enable = load_enable;
         lanes$1$load_module = load_module;
         lanes$1$load_address = load_address;
@@ -9864,11 +10812,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         lanes$2$a_n_s = e_ns;
         lanes$2$a_n_beam = e_nbeam;
         lanes$2$a_n_b = e_nb;
-        lanes$2$c_n_s = ns_d3$q;
-        lanes$2$c_n_beam = nbeam_d3$q;
-        lanes$2$c_n_b = nb_d3$q;
-        lanes$2$n_s = ns_d4$q;
-        lanes$2$n_beam = nbeam_d4$q;
+        lanes$2$c_n_s = ns_d4$q;
+        lanes$2$c_n_beam = nbeam_d4$q;
+        lanes$2$c_n_b = nb_d4$q;
+        lanes$2$n_s = ns_d5$q;
+        lanes$2$n_beam = nbeam_d5$q;
         lanes$2$load_enable = load_enable;
         lanes$2$load_module = load_module;
         lanes$2$load_address = load_address;
@@ -9909,11 +10857,11 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         lanes$3$a_n_s = e_ns;
         lanes$3$a_n_beam = e_nbeam;
         lanes$3$a_n_b = e_nb;
-        lanes$3$c_n_s = ns_d3$q;
-        lanes$3$c_n_beam = nbeam_d3$q;
-        lanes$3$c_n_b = nb_d3$q;
-        lanes$3$n_s = ns_d4$q;
-        lanes$3$n_beam = nbeam_d4$q;
+        lanes$3$c_n_s = ns_d4$q;
+        lanes$3$c_n_beam = nbeam_d4$q;
+        lanes$3$c_n_b = nb_d4$q;
+        lanes$3$n_s = ns_d5$q;
+        lanes$3$n_beam = nbeam_d5$q;
         lanes$3$load_enable = load_enable;
         lanes$3$load_module = load_module;
         lanes$3$load_address = load_address;
@@ -9983,10 +10931,10 @@ module top$late(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats
         if (reset) begin
             running$d = 1'b0;
         end
-        valid_q$d = run_d4$q;
-        ns_q$d = ns_d4$q;
-        nbeam_q$d = nbeam_d4$q;
-        nb_q$d = nb_d4$q;
+        valid_q$d = run_d5$q;
+        ns_q$d = ns_d5$q;
+        nbeam_q$d = nbeam_d5$q;
+        nb_q$d = nb_d5$q;
         busy_pass = running$q;
         if (perspective) begin
             busy_pass = lead$busy;
@@ -10098,6 +11046,21 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -10125,8 +11088,8 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -10134,8 +11097,8 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -10148,9 +11111,11 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg = 'h0;
-    wire  [31:0] div$dx_mag = 'h0;
+    wire  [15:0] div$dx_mag = 'h0;
+    wire  div$dx_pos = 'h0;
     wire  div$dy_neg = 'h0;
-    wire  [31:0] div$dy_mag = 'h0;
+    wire  [15:0] div$dy_mag = 'h0;
+    wire  div$dy_pos = 'h0;
     wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -10251,12 +11216,18 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -10279,12 +11250,12 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -10308,6 +11279,31 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$0$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$late$lanes$0$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$late$lanes$0$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$late$lanes$0$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$late$lanes$0$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$late$lanes$0$nx nx(
         .d(nx$d),
@@ -10544,6 +11540,11 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$late$lanes$0$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$late$lanes$0$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -10553,6 +11554,11 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$late$lanes$0$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$late$lanes$0$sr_q sr_q(
         .d(sr_q$d),
@@ -10588,8 +11594,10 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -10627,6 +11635,11 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -10642,8 +11655,10 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -10681,6 +11696,11 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -10691,33 +11711,38 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -10795,10 +11820,10 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -10842,6 +11867,7 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -10849,15 +11875,16 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -10865,7 +11892,7 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -11002,6 +12029,23 @@ module top$late$lanes$0$addr_q2(d,q,clock);
     end
           
 endmodule // top$late$lanes$0$addr_q2
+module top$late$lanes$0$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$addr_q3
 module top$late$lanes$0$b_near_r(d,q,clock);
     
     // Module arguments
@@ -11257,6 +12301,23 @@ module top$late$lanes$0$ext_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$0$ext_q
+module top$late$lanes$0$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$0$ext_q2
 module top$late$lanes$0$face_q(d,q,clock);
     
     // Module arguments
@@ -11540,13 +12601,13 @@ endmodule // top$late$lanes$0$par_dx_pos
 module top$late$lanes$0$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -11591,13 +12652,13 @@ endmodule // top$late$lanes$0$par_dy_pos
 module top$late$lanes$0$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -11690,6 +12751,91 @@ module top$late$lanes$0$sr_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$0$sr_q
+module top$late$lanes$0$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$0$view_axes
+module top$late$lanes$0$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$0$view_dims
+module top$late$lanes$0$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$0$view_dx
+module top$late$lanes$0$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$0$view_dy
+module top$late$lanes$0$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$0$view_slices
 module top$late$lanes$0$x_first_r(d,q,clock);
     
     // Module arguments
@@ -11890,6 +13036,21 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -11917,8 +13078,8 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -11926,8 +13087,8 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -11940,9 +13101,11 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg = 'h0;
-    wire  [31:0] div$dx_mag = 'h0;
+    wire  [15:0] div$dx_mag = 'h0;
+    wire  div$dx_pos = 'h0;
     wire  div$dy_neg = 'h0;
-    wire  [31:0] div$dy_mag = 'h0;
+    wire  [15:0] div$dy_mag = 'h0;
+    wire  div$dy_pos = 'h0;
     wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -12043,12 +13206,18 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -12071,12 +13240,12 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -12100,6 +13269,31 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$1$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$late$lanes$1$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$late$lanes$1$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$late$lanes$1$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$late$lanes$1$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$late$lanes$1$nx nx(
         .d(nx$d),
@@ -12336,6 +13530,11 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$late$lanes$1$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$late$lanes$1$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -12345,6 +13544,11 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$late$lanes$1$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$late$lanes$1$sr_q sr_q(
         .d(sr_q$d),
@@ -12380,8 +13584,10 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -12419,6 +13625,11 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -12434,8 +13645,10 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -12473,6 +13686,11 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -12483,33 +13701,38 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -12587,10 +13810,10 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -12634,6 +13857,7 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -12641,15 +13865,16 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -12657,7 +13882,7 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -12794,6 +14019,23 @@ module top$late$lanes$1$addr_q2(d,q,clock);
     end
           
 endmodule // top$late$lanes$1$addr_q2
+module top$late$lanes$1$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$addr_q3
 module top$late$lanes$1$b_near_r(d,q,clock);
     
     // Module arguments
@@ -13049,6 +14291,23 @@ module top$late$lanes$1$ext_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$1$ext_q
+module top$late$lanes$1$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$1$ext_q2
 module top$late$lanes$1$face_q(d,q,clock);
     
     // Module arguments
@@ -13332,13 +14591,13 @@ endmodule // top$late$lanes$1$par_dx_pos
 module top$late$lanes$1$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -13383,13 +14642,13 @@ endmodule // top$late$lanes$1$par_dy_pos
 module top$late$lanes$1$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -13482,6 +14741,91 @@ module top$late$lanes$1$sr_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$1$sr_q
+module top$late$lanes$1$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$1$view_axes
+module top$late$lanes$1$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$1$view_dims
+module top$late$lanes$1$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$1$view_dx
+module top$late$lanes$1$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$1$view_dy
+module top$late$lanes$1$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$1$view_slices
 module top$late$lanes$1$x_first_r(d,q,clock);
     
     // Module arguments
@@ -13682,6 +15026,21 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -13709,8 +15068,8 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -13718,8 +15077,8 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -13732,9 +15091,11 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg = 'h0;
-    wire  [31:0] div$dx_mag = 'h0;
+    wire  [15:0] div$dx_mag = 'h0;
+    wire  div$dx_pos = 'h0;
     wire  div$dy_neg = 'h0;
-    wire  [31:0] div$dy_mag = 'h0;
+    wire  [15:0] div$dy_mag = 'h0;
+    wire  div$dy_pos = 'h0;
     wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -13835,12 +15196,18 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -13863,12 +15230,12 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -13892,6 +15259,31 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$2$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$late$lanes$2$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$late$lanes$2$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$late$lanes$2$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$late$lanes$2$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$late$lanes$2$nx nx(
         .d(nx$d),
@@ -14128,6 +15520,11 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$late$lanes$2$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$late$lanes$2$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -14137,6 +15534,11 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$late$lanes$2$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$late$lanes$2$sr_q sr_q(
         .d(sr_q$d),
@@ -14172,8 +15574,10 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -14211,6 +15615,11 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -14226,8 +15635,10 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -14265,6 +15676,11 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -14275,33 +15691,38 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -14379,10 +15800,10 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -14426,6 +15847,7 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -14433,15 +15855,16 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -14449,7 +15872,7 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -14586,6 +16009,23 @@ module top$late$lanes$2$addr_q2(d,q,clock);
     end
           
 endmodule // top$late$lanes$2$addr_q2
+module top$late$lanes$2$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$addr_q3
 module top$late$lanes$2$b_near_r(d,q,clock);
     
     // Module arguments
@@ -14841,6 +16281,23 @@ module top$late$lanes$2$ext_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$2$ext_q
+module top$late$lanes$2$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$2$ext_q2
 module top$late$lanes$2$face_q(d,q,clock);
     
     // Module arguments
@@ -15124,13 +16581,13 @@ endmodule // top$late$lanes$2$par_dx_pos
 module top$late$lanes$2$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -15175,13 +16632,13 @@ endmodule // top$late$lanes$2$par_dy_pos
 module top$late$lanes$2$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -15274,6 +16731,91 @@ module top$late$lanes$2$sr_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$2$sr_q
+module top$late$lanes$2$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$2$view_axes
+module top$late$lanes$2$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$2$view_dims
+module top$late$lanes$2$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$2$view_dx
+module top$late$lanes$2$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$2$view_dy
+module top$late$lanes$2$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$2$view_slices
 module top$late$lanes$2$x_first_r(d,q,clock);
     
     // Module arguments
@@ -15474,6 +17016,21 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -15501,8 +17058,8 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -15510,8 +17067,8 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -15524,9 +17081,11 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg = 'h0;
-    wire  [31:0] div$dx_mag = 'h0;
+    wire  [15:0] div$dx_mag = 'h0;
+    wire  div$dx_pos = 'h0;
     wire  div$dy_neg = 'h0;
-    wire  [31:0] div$dy_mag = 'h0;
+    wire  [15:0] div$dy_mag = 'h0;
+    wire  div$dy_pos = 'h0;
     wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -15627,12 +17186,18 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -15655,12 +17220,12 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -15684,6 +17249,31 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$late$lanes$3$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$late$lanes$3$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$late$lanes$3$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$late$lanes$3$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$late$lanes$3$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$late$lanes$3$nx nx(
         .d(nx$d),
@@ -15920,6 +17510,11 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$late$lanes$3$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$late$lanes$3$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -15929,6 +17524,11 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$late$lanes$3$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$late$lanes$3$sr_q sr_q(
         .d(sr_q$d),
@@ -15964,8 +17564,10 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -16003,6 +17605,11 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -16018,8 +17625,10 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -16057,6 +17666,11 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -16067,33 +17681,38 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -16171,10 +17790,10 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -16218,6 +17837,7 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -16225,15 +17845,16 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -16241,7 +17862,7 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -16378,6 +17999,23 @@ module top$late$lanes$3$addr_q2(d,q,clock);
     end
           
 endmodule // top$late$lanes$3$addr_q2
+module top$late$lanes$3$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$addr_q3
 module top$late$lanes$3$b_near_r(d,q,clock);
     
     // Module arguments
@@ -16633,6 +18271,23 @@ module top$late$lanes$3$ext_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$3$ext_q
+module top$late$lanes$3$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$lanes$3$ext_q2
 module top$late$lanes$3$face_q(d,q,clock);
     
     // Module arguments
@@ -16916,13 +18571,13 @@ endmodule // top$late$lanes$3$par_dx_pos
 module top$late$lanes$3$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -16967,13 +18622,13 @@ endmodule // top$late$lanes$3$par_dy_pos
 module top$late$lanes$3$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -17066,6 +18721,91 @@ module top$late$lanes$3$sr_q(d,q,clock);
     end
           
 endmodule // top$late$lanes$3$sr_q
+module top$late$lanes$3$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$3$view_axes
+module top$late$lanes$3$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$3$view_dims
+module top$late$lanes$3$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$3$view_dx
+module top$late$lanes$3$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$3$view_dy
+module top$late$lanes$3$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$late$lanes$3$view_slices
 module top$late$lanes$3$x_first_r(d,q,clock);
     
     // Module arguments
@@ -17287,6 +19027,23 @@ module top$late$nb_d4(d,q,clock);
     end
           
 endmodule // top$late$nb_d4
+module top$late$nb_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$nb_d5
 module top$late$nb_end(d,q,clock);
     
     // Module arguments
@@ -17423,6 +19180,23 @@ module top$late$nbeam_d4(d,q,clock);
     end
           
 endmodule // top$late$nbeam_d4
+module top$late$nbeam_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$nbeam_d5
 module top$late$nbeam_end(d,q,clock);
     
     // Module arguments
@@ -17559,6 +19333,23 @@ module top$late$ns_d4(d,q,clock);
     end
           
 endmodule // top$late$ns_d4
+module top$late$ns_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$ns_d5
 module top$late$ns_end(d,q,clock);
     
     // Module arguments
@@ -17712,6 +19503,23 @@ module top$late$run_d4(d,q,clock);
     end
           
 endmodule // top$late$run_d4
+module top$late$run_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$late$run_d5
 module top$late$running(d,q,clock);
     
     // Module arguments

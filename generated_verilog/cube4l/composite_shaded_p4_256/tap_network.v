@@ -1265,6 +1265,7 @@ module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -1650,6 +1651,7 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -2051,37 +2053,69 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_8[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_9[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_10[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_11[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_12[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_13[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_14[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_15[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_16[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_17[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_18[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_19[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_20[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_21[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_22[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_23[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_24[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_25[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_26[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_27[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_28[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_29[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_30[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_31[16302:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -4605,6 +4639,7 @@ module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -4990,6 +5025,7 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -5391,37 +5427,69 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_8[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_9[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_10[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_11[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_12[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_13[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_14[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_15[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_16[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_17[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_18[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_19[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_20[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_21[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_22[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_23[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_24[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_25[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_26[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_27[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_28[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_29[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_30[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_31[16302:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -7945,6 +8013,7 @@ module top$lanes$2$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -8330,6 +8399,7 @@ module top$lanes$2$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -8731,37 +8801,69 @@ module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_8[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_9[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_10[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_11[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_12[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_13[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_14[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_15[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_16[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_17[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_18[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_19[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_20[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_21[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_22[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_23[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_24[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_25[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_26[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_27[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_28[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_29[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_30[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_31[16302:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -11285,6 +11387,7 @@ module top$lanes$3$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -11670,6 +11773,7 @@ module top$lanes$3$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [31:0] mem_0_0[61:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;
@@ -12071,37 +12175,69 @@ module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [31:0] stored_word = {write_data[55:48], write_data[39:32], write_data[23:16], write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_8[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_9[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_10[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_11[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_12[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_13[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_14[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_15[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_16[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_17[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_18[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_19[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_20[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_21[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_22[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_23[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_24[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_25[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_26[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_27[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_28[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_29[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_30[16302:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_31[16302:0];
     reg [31:0] rd_0;
     reg [31:0] q_0;

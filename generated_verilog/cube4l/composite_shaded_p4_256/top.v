@@ -55,7 +55,7 @@ module top(clock,start,reset,load_enable,load_module,load_address,load_data,host
     
     // Constant declarations
     localparam  gradient = 1'b1;
-    localparam  flush_clocks = 8'h1b;
+    localparam  flush_clocks = 8'h1c;
     
     // Stub signals
     reg  view$clock;

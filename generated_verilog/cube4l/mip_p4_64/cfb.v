@@ -360,6 +360,18 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
     reg  [15:0] nb_d4$d;
     wire  [15:0] nb_d4$q;
     reg  nb_d4$clock;
+    reg  run_d5$d;
+    wire  run_d5$q;
+    reg  run_d5$clock;
+    reg  [15:0] ns_d5$d;
+    wire  [15:0] ns_d5$q;
+    reg  ns_d5$clock;
+    reg  [15:0] nbeam_d5$d;
+    wire  [15:0] nbeam_d5$q;
+    reg  nbeam_d5$clock;
+    reg  [15:0] nb_d5$d;
+    wire  [15:0] nb_d5$q;
+    reg  nb_d5$clock;
     reg  valid_q$d;
     wire  valid_q$q;
     reg  valid_q$clock;
@@ -702,6 +714,26 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         .q(nb_d4$q),
         .clock(nb_d4$clock)
     );
+    top$cfb$run_d5 run_d5(
+        .d(run_d5$d),
+        .q(run_d5$q),
+        .clock(run_d5$clock)
+    );
+    top$cfb$ns_d5 ns_d5(
+        .d(ns_d5$d),
+        .q(ns_d5$q),
+        .clock(ns_d5$clock)
+    );
+    top$cfb$nbeam_d5 nbeam_d5(
+        .d(nbeam_d5$d),
+        .q(nbeam_d5$q),
+        .clock(nbeam_d5$clock)
+    );
+    top$cfb$nb_d5 nb_d5(
+        .d(nb_d5$d),
+        .q(nb_d5$q),
+        .clock(nb_d5$clock)
+    );
     top$cfb$valid_q valid_q(
         .d(valid_q$d),
         .q(valid_q$q),
@@ -800,6 +832,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_d2$clock = clock;
         nb_d3$clock = clock;
         nb_d4$clock = clock;
+        run_d5$clock = clock;
+        ns_d5$clock = clock;
+        nbeam_d5$clock = clock;
+        nb_d5$clock = clock;
         ny_last$clock = clock;
         b_last$clock = clock;
         nb_left$clock = clock;
@@ -834,6 +870,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         nb_d2$d = nb_d2$q;
         nb_d3$d = nb_d3$q;
         nb_d4$d = nb_d4$q;
+        run_d5$d = run_d5$q;
+        ns_d5$d = ns_d5$q;
+        nbeam_d5$d = nbeam_d5$q;
+        nb_d5$d = nb_d5$q;
         ny_last$d = ny_last$q;
         b_last$d = b_last$q;
         nb_left$d = nb_left$q;
@@ -876,6 +916,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         ns_d4$d = ns_d3$q;
         nbeam_d4$d = nbeam_d3$q;
         nb_d4$d = nb_d3$q;
+        run_d5$d = run_d4$q;
+        ns_d5$d = ns_d4$q;
+        nbeam_d5$d = nbeam_d4$q;
+        nb_d5$d = nb_d4$q;
         z0 = slices[('h20)+:(16)];
         z1 = slices[('h30)+:(16)];
         ny_m1 = dims[('h10)+:(16)] - 'h1;
@@ -900,11 +944,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$0$a_n_s = e_ns;
         lanes$0$a_n_beam = e_nbeam;
         lanes$0$a_n_b = e_nb;
-        lanes$0$c_n_s = ns_d3$q;
-        lanes$0$c_n_beam = nbeam_d3$q;
-        lanes$0$c_n_b = nb_d3$q;
-        lanes$0$n_s = ns_d4$q;
-        lanes$0$n_beam = nbeam_d4$q;
+        lanes$0$c_n_s = ns_d4$q;
+        lanes$0$c_n_beam = nbeam_d4$q;
+        lanes$0$c_n_b = nb_d4$q;
+        lanes$0$n_s = ns_d5$q;
+        lanes$0$n_beam = nbeam_d5$q;
         lanes$0$load_enable = load_enable;
         lanes$0$load_module = load_module;
         lanes$0$load_address = load_address;
@@ -945,11 +989,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$1$a_n_s = e_ns;
         lanes$1$a_n_beam = e_nbeam;
         lanes$1$a_n_b = e_nb;
-        lanes$1$c_n_s = ns_d3$q;
-        lanes$1$c_n_beam = nbeam_d3$q;
-        lanes$1$c_n_b = nb_d3$q;
-        lanes$1$n_s = ns_d4$q;
-        lanes$1$n_beam = nbeam_d4$q;
+        lanes$1$c_n_s = ns_d4$q;
+        lanes$1$c_n_beam = nbeam_d4$q;
+        lanes$1$c_n_b = nb_d4$q;
+        lanes$1$n_s = ns_d5$q;
+        lanes$1$n_beam = nbeam_d5$q;
         lanes$1$load_enable = load_enable;
         lanes$1$load_module = load_module;
         lanes$1$load_address = load_address;
@@ -990,11 +1034,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$2$a_n_s = e_ns;
         lanes$2$a_n_beam = e_nbeam;
         lanes$2$a_n_b = e_nb;
-        lanes$2$c_n_s = ns_d3$q;
-        lanes$2$c_n_beam = nbeam_d3$q;
-        lanes$2$c_n_b = nb_d3$q;
-        lanes$2$n_s = ns_d4$q;
-        lanes$2$n_beam = nbeam_d4$q;
+        lanes$2$c_n_s = ns_d4$q;
+        lanes$2$c_n_beam = nbeam_d4$q;
+        lanes$2$c_n_b = nb_d4$q;
+        lanes$2$n_s = ns_d5$q;
+        lanes$2$n_beam = nbeam_d5$q;
         lanes$2$load_enable = load_enable;
         lanes$2$load_module = load_module;
         lanes$2$load_address = load_address;
@@ -1035,11 +1079,11 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         lanes$3$a_n_s = e_ns;
         lanes$3$a_n_beam = e_nbeam;
         lanes$3$a_n_b = e_nb;
-        lanes$3$c_n_s = ns_d3$q;
-        lanes$3$c_n_beam = nbeam_d3$q;
-        lanes$3$c_n_b = nb_d3$q;
-        lanes$3$n_s = ns_d4$q;
-        lanes$3$n_beam = nbeam_d4$q;
+        lanes$3$c_n_s = ns_d4$q;
+        lanes$3$c_n_beam = nbeam_d4$q;
+        lanes$3$c_n_b = nb_d4$q;
+        lanes$3$n_s = ns_d5$q;
+        lanes$3$n_beam = nbeam_d5$q;
         lanes$3$load_enable = load_enable;
         lanes$3$load_module = load_module;
         lanes$3$load_address = load_address;
@@ -1109,10 +1153,10 @@ module top$cfb(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_z,beats,
         if (reset) begin
             running$d = 1'b0;
         end
-        valid_q$d = run_d4$q;
-        ns_q$d = ns_d4$q;
-        nbeam_q$d = nbeam_d4$q;
-        nb_q$d = nb_d4$q;
+        valid_q$d = run_d5$q;
+        ns_q$d = ns_d5$q;
+        nbeam_q$d = nbeam_d5$q;
+        nb_q$d = nb_d5$q;
         busy_pass = running$q;
         if (perspective) begin
             busy_pass = lead$busy;
@@ -1224,6 +1268,21 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -1251,8 +1310,8 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -1260,8 +1319,8 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -1274,9 +1333,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg = 'h0;
-    wire  [31:0] div$dx_mag = 'h0;
+    wire  [15:0] div$dx_mag = 'h0;
+    wire  div$dx_pos = 'h0;
     wire  div$dy_neg = 'h0;
-    wire  [31:0] div$dy_mag = 'h0;
+    wire  [15:0] div$dy_mag = 'h0;
+    wire  div$dy_pos = 'h0;
     wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -1377,12 +1438,18 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -1405,12 +1472,12 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -1434,6 +1501,31 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$0$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$cfb$lanes$0$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$cfb$lanes$0$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$cfb$lanes$0$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$cfb$lanes$0$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$cfb$lanes$0$nx nx(
         .d(nx$d),
@@ -1670,6 +1762,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$cfb$lanes$0$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$cfb$lanes$0$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -1679,6 +1776,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$cfb$lanes$0$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$cfb$lanes$0$sr_q sr_q(
         .d(sr_q$d),
@@ -1714,8 +1816,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -1753,6 +1857,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -1768,8 +1877,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -1807,6 +1918,11 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -1817,33 +1933,38 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -1921,10 +2042,10 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -1968,6 +2089,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -1975,15 +2097,16 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -1991,7 +2114,7 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -2128,6 +2251,23 @@ module top$cfb$lanes$0$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$addr_q2
+module top$cfb$lanes$0$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$addr_q3
 module top$cfb$lanes$0$b_near_r(d,q,clock);
     
     // Module arguments
@@ -2383,6 +2523,23 @@ module top$cfb$lanes$0$ext_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$ext_q
+module top$cfb$lanes$0$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$0$ext_q2
 module top$cfb$lanes$0$face_q(d,q,clock);
     
     // Module arguments
@@ -2532,48 +2689,85 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16383:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
+    (* no_rw_check *)
     reg [0:0] mem_1_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_7[16383:0];
     reg [7:0] rd_1;
     reg [7:0] q_1;
+    reg [7:0] r_1;
+    (* no_rw_check *)
     reg [0:0] mem_2_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_7[16383:0];
     reg [7:0] rd_2;
     reg [7:0] q_2;
+    reg [7:0] r_2;
+    (* no_rw_check *)
     reg [0:0] mem_3_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_7[16383:0];
     reg [7:0] rd_3;
     reg [7:0] q_3;
+    reg [7:0] r_3;
     reg [1:0] sel_1;
     reg [1:0] sel_2;
+    reg [1:0] sel_3;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -2585,6 +2779,7 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
        rd_1[0:0] <= mem_1_0[read_address[13:0]];
        rd_1[1:1] <= mem_1_1[read_address[13:0]];
        rd_1[2:2] <= mem_1_2[read_address[13:0]];
@@ -2594,6 +2789,7 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
        rd_1[6:6] <= mem_1_6[read_address[13:0]];
        rd_1[7:7] <= mem_1_7[read_address[13:0]];
        q_1 <= rd_1;
+       r_1 <= q_1;
        rd_2[0:0] <= mem_2_0[read_address[13:0]];
        rd_2[1:1] <= mem_2_1[read_address[13:0]];
        rd_2[2:2] <= mem_2_2[read_address[13:0]];
@@ -2603,6 +2799,7 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
        rd_2[6:6] <= mem_2_6[read_address[13:0]];
        rd_2[7:7] <= mem_2_7[read_address[13:0]];
        q_2 <= rd_2;
+       r_2 <= q_2;
        rd_3[0:0] <= mem_3_0[read_address[13:0]];
        rd_3[1:1] <= mem_3_1[read_address[13:0]];
        rd_3[2:2] <= mem_3_2[read_address[13:0]];
@@ -2612,8 +2809,10 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
        rd_3[6:6] <= mem_3_6[read_address[13:0]];
        rd_3[7:7] <= mem_3_7[read_address[13:0]];
        q_3 <= rd_3;
+       r_3 <= q_3;
        sel_1 <= read_address[15:14];
        sel_2 <= sel_1;
+       sel_3 <= sel_2;
     end
     
     always @(posedge write_clock) begin
@@ -2660,12 +2859,12 @@ module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,wr
     end
     
     always @(*) begin
-       case (sel_2)
-          0: read_data = {8'd0, q_0[7:0]};
-          1: read_data = {8'd0, q_1[7:0]};
-          2: read_data = {8'd0, q_2[7:0]};
-          3: read_data = {8'd0, q_3[7:0]};
-          default: read_data = {8'd0, q_0[7:0]};
+       case (sel_3)
+          0: read_data = {8'd0, r_0[7:0]};
+          1: read_data = {8'd0, r_1[7:0]};
+          2: read_data = {8'd0, r_2[7:0]};
+          3: read_data = {8'd0, r_3[7:0]};
+          default: read_data = {8'd0, r_0[7:0]};
        endcase
     end
 endmodule // top$cfb$lanes$0$memory
@@ -2791,13 +2990,13 @@ endmodule // top$cfb$lanes$0$par_dx_pos
 module top$cfb$lanes$0$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -2842,13 +3041,13 @@ endmodule // top$cfb$lanes$0$par_dy_pos
 module top$cfb$lanes$0$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -2941,6 +3140,91 @@ module top$cfb$lanes$0$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$sr_q
+module top$cfb$lanes$0$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_axes
+module top$cfb$lanes$0$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_dims
+module top$cfb$lanes$0$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_dx
+module top$cfb$lanes$0$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_dy
+module top$cfb$lanes$0$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$0$view_slices
 module top$cfb$lanes$0$x_first_r(d,q,clock);
     
     // Module arguments
@@ -3141,6 +3425,21 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -3168,8 +3467,8 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -3177,8 +3476,8 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -3191,9 +3490,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg = 'h0;
-    wire  [31:0] div$dx_mag = 'h0;
+    wire  [15:0] div$dx_mag = 'h0;
+    wire  div$dx_pos = 'h0;
     wire  div$dy_neg = 'h0;
-    wire  [31:0] div$dy_mag = 'h0;
+    wire  [15:0] div$dy_mag = 'h0;
+    wire  div$dy_pos = 'h0;
     wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -3294,12 +3595,18 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -3322,12 +3629,12 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -3351,6 +3658,31 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$1$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$cfb$lanes$1$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$cfb$lanes$1$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$cfb$lanes$1$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$cfb$lanes$1$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$cfb$lanes$1$nx nx(
         .d(nx$d),
@@ -3587,6 +3919,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$cfb$lanes$1$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$cfb$lanes$1$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -3596,6 +3933,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$cfb$lanes$1$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$cfb$lanes$1$sr_q sr_q(
         .d(sr_q$d),
@@ -3631,8 +3973,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -3670,6 +4014,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -3685,8 +4034,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -3724,6 +4075,11 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -3734,33 +4090,38 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -3838,10 +4199,10 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -3885,6 +4246,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -3892,15 +4254,16 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -3908,7 +4271,7 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -4045,6 +4408,23 @@ module top$cfb$lanes$1$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$addr_q2
+module top$cfb$lanes$1$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$addr_q3
 module top$cfb$lanes$1$b_near_r(d,q,clock);
     
     // Module arguments
@@ -4300,6 +4680,23 @@ module top$cfb$lanes$1$ext_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$ext_q
+module top$cfb$lanes$1$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$1$ext_q2
 module top$cfb$lanes$1$face_q(d,q,clock);
     
     // Module arguments
@@ -4449,48 +4846,85 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16383:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
+    (* no_rw_check *)
     reg [0:0] mem_1_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_7[16383:0];
     reg [7:0] rd_1;
     reg [7:0] q_1;
+    reg [7:0] r_1;
+    (* no_rw_check *)
     reg [0:0] mem_2_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_7[16383:0];
     reg [7:0] rd_2;
     reg [7:0] q_2;
+    reg [7:0] r_2;
+    (* no_rw_check *)
     reg [0:0] mem_3_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_7[16383:0];
     reg [7:0] rd_3;
     reg [7:0] q_3;
+    reg [7:0] r_3;
     reg [1:0] sel_1;
     reg [1:0] sel_2;
+    reg [1:0] sel_3;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -4502,6 +4936,7 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
        rd_1[0:0] <= mem_1_0[read_address[13:0]];
        rd_1[1:1] <= mem_1_1[read_address[13:0]];
        rd_1[2:2] <= mem_1_2[read_address[13:0]];
@@ -4511,6 +4946,7 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
        rd_1[6:6] <= mem_1_6[read_address[13:0]];
        rd_1[7:7] <= mem_1_7[read_address[13:0]];
        q_1 <= rd_1;
+       r_1 <= q_1;
        rd_2[0:0] <= mem_2_0[read_address[13:0]];
        rd_2[1:1] <= mem_2_1[read_address[13:0]];
        rd_2[2:2] <= mem_2_2[read_address[13:0]];
@@ -4520,6 +4956,7 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
        rd_2[6:6] <= mem_2_6[read_address[13:0]];
        rd_2[7:7] <= mem_2_7[read_address[13:0]];
        q_2 <= rd_2;
+       r_2 <= q_2;
        rd_3[0:0] <= mem_3_0[read_address[13:0]];
        rd_3[1:1] <= mem_3_1[read_address[13:0]];
        rd_3[2:2] <= mem_3_2[read_address[13:0]];
@@ -4529,8 +4966,10 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
        rd_3[6:6] <= mem_3_6[read_address[13:0]];
        rd_3[7:7] <= mem_3_7[read_address[13:0]];
        q_3 <= rd_3;
+       r_3 <= q_3;
        sel_1 <= read_address[15:14];
        sel_2 <= sel_1;
+       sel_3 <= sel_2;
     end
     
     always @(posedge write_clock) begin
@@ -4577,12 +5016,12 @@ module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,wr
     end
     
     always @(*) begin
-       case (sel_2)
-          0: read_data = {8'd0, q_0[7:0]};
-          1: read_data = {8'd0, q_1[7:0]};
-          2: read_data = {8'd0, q_2[7:0]};
-          3: read_data = {8'd0, q_3[7:0]};
-          default: read_data = {8'd0, q_0[7:0]};
+       case (sel_3)
+          0: read_data = {8'd0, r_0[7:0]};
+          1: read_data = {8'd0, r_1[7:0]};
+          2: read_data = {8'd0, r_2[7:0]};
+          3: read_data = {8'd0, r_3[7:0]};
+          default: read_data = {8'd0, r_0[7:0]};
        endcase
     end
 endmodule // top$cfb$lanes$1$memory
@@ -4708,13 +5147,13 @@ endmodule // top$cfb$lanes$1$par_dx_pos
 module top$cfb$lanes$1$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -4759,13 +5198,13 @@ endmodule // top$cfb$lanes$1$par_dy_pos
 module top$cfb$lanes$1$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -4858,6 +5297,91 @@ module top$cfb$lanes$1$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$sr_q
+module top$cfb$lanes$1$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_axes
+module top$cfb$lanes$1$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_dims
+module top$cfb$lanes$1$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_dx
+module top$cfb$lanes$1$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_dy
+module top$cfb$lanes$1$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$1$view_slices
 module top$cfb$lanes$1$x_first_r(d,q,clock);
     
     // Module arguments
@@ -5058,6 +5582,21 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -5085,8 +5624,8 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -5094,8 +5633,8 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -5108,9 +5647,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg = 'h0;
-    wire  [31:0] div$dx_mag = 'h0;
+    wire  [15:0] div$dx_mag = 'h0;
+    wire  div$dx_pos = 'h0;
     wire  div$dy_neg = 'h0;
-    wire  [31:0] div$dy_mag = 'h0;
+    wire  [15:0] div$dy_mag = 'h0;
+    wire  div$dy_pos = 'h0;
     wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -5211,12 +5752,18 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -5239,12 +5786,12 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -5268,6 +5815,31 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$2$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$cfb$lanes$2$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$cfb$lanes$2$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$cfb$lanes$2$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$cfb$lanes$2$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$cfb$lanes$2$nx nx(
         .d(nx$d),
@@ -5504,6 +6076,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$cfb$lanes$2$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$cfb$lanes$2$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -5513,6 +6090,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$cfb$lanes$2$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$cfb$lanes$2$sr_q sr_q(
         .d(sr_q$d),
@@ -5548,8 +6130,10 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -5587,6 +6171,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -5602,8 +6191,10 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -5641,6 +6232,11 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -5651,33 +6247,38 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -5755,10 +6356,10 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -5802,6 +6403,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -5809,15 +6411,16 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -5825,7 +6428,7 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -5962,6 +6565,23 @@ module top$cfb$lanes$2$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$addr_q2
+module top$cfb$lanes$2$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$addr_q3
 module top$cfb$lanes$2$b_near_r(d,q,clock);
     
     // Module arguments
@@ -6217,6 +6837,23 @@ module top$cfb$lanes$2$ext_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$ext_q
+module top$cfb$lanes$2$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$2$ext_q2
 module top$cfb$lanes$2$face_q(d,q,clock);
     
     // Module arguments
@@ -6366,48 +7003,85 @@ module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,wr
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16383:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
+    (* no_rw_check *)
     reg [0:0] mem_1_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_7[16383:0];
     reg [7:0] rd_1;
     reg [7:0] q_1;
+    reg [7:0] r_1;
+    (* no_rw_check *)
     reg [0:0] mem_2_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_7[16383:0];
     reg [7:0] rd_2;
     reg [7:0] q_2;
+    reg [7:0] r_2;
+    (* no_rw_check *)
     reg [0:0] mem_3_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_7[16383:0];
     reg [7:0] rd_3;
     reg [7:0] q_3;
+    reg [7:0] r_3;
     reg [1:0] sel_1;
     reg [1:0] sel_2;
+    reg [1:0] sel_3;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -6419,6 +7093,7 @@ module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,wr
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
        rd_1[0:0] <= mem_1_0[read_address[13:0]];
        rd_1[1:1] <= mem_1_1[read_address[13:0]];
        rd_1[2:2] <= mem_1_2[read_address[13:0]];
@@ -6428,6 +7103,7 @@ module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,wr
        rd_1[6:6] <= mem_1_6[read_address[13:0]];
        rd_1[7:7] <= mem_1_7[read_address[13:0]];
        q_1 <= rd_1;
+       r_1 <= q_1;
        rd_2[0:0] <= mem_2_0[read_address[13:0]];
        rd_2[1:1] <= mem_2_1[read_address[13:0]];
        rd_2[2:2] <= mem_2_2[read_address[13:0]];
@@ -6437,6 +7113,7 @@ module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,wr
        rd_2[6:6] <= mem_2_6[read_address[13:0]];
        rd_2[7:7] <= mem_2_7[read_address[13:0]];
        q_2 <= rd_2;
+       r_2 <= q_2;
        rd_3[0:0] <= mem_3_0[read_address[13:0]];
        rd_3[1:1] <= mem_3_1[read_address[13:0]];
        rd_3[2:2] <= mem_3_2[read_address[13:0]];
@@ -6446,8 +7123,10 @@ module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,wr
        rd_3[6:6] <= mem_3_6[read_address[13:0]];
        rd_3[7:7] <= mem_3_7[read_address[13:0]];
        q_3 <= rd_3;
+       r_3 <= q_3;
        sel_1 <= read_address[15:14];
        sel_2 <= sel_1;
+       sel_3 <= sel_2;
     end
     
     always @(posedge write_clock) begin
@@ -6494,12 +7173,12 @@ module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,wr
     end
     
     always @(*) begin
-       case (sel_2)
-          0: read_data = {8'd0, q_0[7:0]};
-          1: read_data = {8'd0, q_1[7:0]};
-          2: read_data = {8'd0, q_2[7:0]};
-          3: read_data = {8'd0, q_3[7:0]};
-          default: read_data = {8'd0, q_0[7:0]};
+       case (sel_3)
+          0: read_data = {8'd0, r_0[7:0]};
+          1: read_data = {8'd0, r_1[7:0]};
+          2: read_data = {8'd0, r_2[7:0]};
+          3: read_data = {8'd0, r_3[7:0]};
+          default: read_data = {8'd0, r_0[7:0]};
        endcase
     end
 endmodule // top$cfb$lanes$2$memory
@@ -6625,13 +7304,13 @@ endmodule // top$cfb$lanes$2$par_dx_pos
 module top$cfb$lanes$2$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -6676,13 +7355,13 @@ endmodule // top$cfb$lanes$2$par_dy_pos
 module top$cfb$lanes$2$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -6775,6 +7454,91 @@ module top$cfb$lanes$2$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$sr_q
+module top$cfb$lanes$2$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$view_axes
+module top$cfb$lanes$2$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$view_dims
+module top$cfb$lanes$2$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$view_dx
+module top$cfb$lanes$2$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$view_dy
+module top$cfb$lanes$2$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$2$view_slices
 module top$cfb$lanes$2$x_first_r(d,q,clock);
     
     // Module arguments
@@ -6975,6 +7739,21 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  memory$write_clock;
     reg  [15:0] memory$write_data;
     reg  memory$write_enable;
+    reg  [47:0] view_dims$d;
+    wire  [47:0] view_dims$q;
+    reg  view_dims$clock;
+    reg  [31:0] view_slices$d;
+    wire  [31:0] view_slices$q;
+    reg  view_slices$clock;
+    reg  [5:0] view_axes$d;
+    wire  [5:0] view_axes$q;
+    reg  view_axes$clock;
+    reg  [32:0] view_dx$d;
+    wire  [32:0] view_dx$q;
+    reg  view_dx$clock;
+    reg  [32:0] view_dy$d;
+    wire  [32:0] view_dy$q;
+    reg  view_dy$clock;
     reg  [15:0] nx$d;
     wire  [15:0] nx$q;
     reg  nx$clock;
@@ -7002,8 +7781,8 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dxn$d;
     wire  par_dxn$q;
     reg  par_dxn$clock;
-    reg  [31:0] par_dxm$d;
-    wire  [31:0] par_dxm$q;
+    reg  [15:0] par_dxm$d;
+    wire  [15:0] par_dxm$q;
     reg  par_dxm$clock;
     reg  par_dx_pos$d;
     wire  par_dx_pos$q;
@@ -7011,8 +7790,8 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  par_dyn$d;
     wire  par_dyn$q;
     reg  par_dyn$clock;
-    reg  [31:0] par_dym$d;
-    wire  [31:0] par_dym$q;
+    reg  [15:0] par_dym$d;
+    wire  [15:0] par_dym$q;
     reg  par_dym$clock;
     reg  par_dy_pos$d;
     wire  par_dy_pos$q;
@@ -7025,9 +7804,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [63:0] div$eye_y;
     reg  [63:0] div$eye_z;
     wire  div$dx_neg = 'h0;
-    wire  [31:0] div$dx_mag = 'h0;
+    wire  [15:0] div$dx_mag = 'h0;
+    wire  div$dx_pos = 'h0;
     wire  div$dy_neg = 'h0;
-    wire  [31:0] div$dy_mag = 'h0;
+    wire  [15:0] div$dy_mag = 'h0;
+    wire  div$dy_pos = 'h0;
     wire  div$invalid = 'h0;
     reg  dxn_q$d;
     wire  dxn_q$q;
@@ -7128,12 +7909,18 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] addr_q2$d;
     wire  [31:0] addr_q2$q;
     reg  addr_q2$clock;
+    reg  [31:0] addr_q3$d;
+    wire  [31:0] addr_q3$q;
+    reg  addr_q3$clock;
     reg  pad_q$d;
     wire  pad_q$q;
     reg  pad_q$clock;
     reg  [15:0] ext_q$d;
     wire  [15:0] ext_q$q;
     reg  ext_q$clock;
+    reg  [15:0] ext_q2$d;
+    wire  [15:0] ext_q2$q;
+    reg  ext_q2$clock;
     reg  sr_q$d;
     wire  sr_q$q;
     reg  sr_q$clock;
@@ -7156,12 +7943,12 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [63:0] dx_abs;
-    reg  [63:0] dy_abs;
+    reg  [31:0] dx_abs;
+    reg  [31:0] dy_abs;
     reg  dxn;
-    reg  [31:0] dxm;
+    reg  [15:0] dxm;
     reg  dyn_;
-    reg  [31:0] dym;
+    reg  [15:0] dym;
     reg  inval;
     reg  dx_pos;
     reg  dx_neg_nz;
@@ -7185,6 +7972,31 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .write_clock(memory$write_clock),
         .write_data(memory$write_data),
         .write_enable(memory$write_enable)
+    );
+    top$cfb$lanes$3$view_dims view_dims(
+        .d(view_dims$d),
+        .q(view_dims$q),
+        .clock(view_dims$clock)
+    );
+    top$cfb$lanes$3$view_slices view_slices(
+        .d(view_slices$d),
+        .q(view_slices$q),
+        .clock(view_slices$clock)
+    );
+    top$cfb$lanes$3$view_axes view_axes(
+        .d(view_axes$d),
+        .q(view_axes$q),
+        .clock(view_axes$clock)
+    );
+    top$cfb$lanes$3$view_dx view_dx(
+        .d(view_dx$d),
+        .q(view_dx$q),
+        .clock(view_dx$clock)
+    );
+    top$cfb$lanes$3$view_dy view_dy(
+        .d(view_dy$d),
+        .q(view_dy$q),
+        .clock(view_dy$clock)
     );
     top$cfb$lanes$3$nx nx(
         .d(nx$d),
@@ -7421,6 +8233,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .q(addr_q2$q),
         .clock(addr_q2$clock)
     );
+    top$cfb$lanes$3$addr_q3 addr_q3(
+        .d(addr_q3$d),
+        .q(addr_q3$q),
+        .clock(addr_q3$clock)
+    );
     top$cfb$lanes$3$pad_q pad_q(
         .d(pad_q$d),
         .q(pad_q$q),
@@ -7430,6 +8247,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .d(ext_q$d),
         .q(ext_q$q),
         .clock(ext_q$clock)
+    );
+    top$cfb$lanes$3$ext_q2 ext_q2(
+        .d(ext_q2$d),
+        .q(ext_q2$q),
+        .clock(ext_q2$clock)
     );
     top$cfb$lanes$3$sr_q sr_q(
         .d(sr_q$d),
@@ -7465,8 +8287,10 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$clock = clock;
         addr_q$clock = clock;
         addr_q2$clock = clock;
+        addr_q3$clock = clock;
         pad_q$clock = clock;
         ext_q$clock = clock;
+        ext_q2$clock = clock;
         sr_q$clock = clock;
         edge_q$clock = clock;
         face_q$clock = clock;
@@ -7504,6 +8328,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$clock = clock;
         slab_lo$clock = clock;
         slab_hi$clock = clock;
+        view_dims$clock = clock;
+        view_slices$clock = clock;
+        view_axes$clock = clock;
+        view_dx$clock = clock;
+        view_dy$clock = clock;
         nx_last$clock = clock;
         ny_last$clock = clock;
         nz_last$clock = clock;
@@ -7519,8 +8348,10 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = z_q$q;
         addr_q$d = addr_q$q;
         addr_q2$d = addr_q2$q;
+        addr_q3$d = addr_q3$q;
         pad_q$d = pad_q$q;
         ext_q$d = ext_q$q;
+        ext_q2$d = ext_q2$q;
         sr_q$d = sr_q$q;
         edge_q$d = edge_q$q;
         face_q$d = face_q$q;
@@ -7558,6 +8389,11 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = b_u$q;
         slab_lo$d = slab_lo$q;
         slab_hi$d = slab_hi$q;
+        view_dims$d = view_dims$q;
+        view_slices$d = view_slices$q;
+        view_axes$d = view_axes$q;
+        view_dx$d = view_dx$q;
+        view_dy$d = view_dy$q;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
         nz_last$d = nz_last$q;
@@ -7568,33 +8404,38 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         par_dyn$d = par_dyn$q;
         par_dym$d = par_dym$q;
         par_dy_pos$d = par_dy_pos$q;
+        view_dims$d = dims[('h0)+:(48)];
+        view_slices$d = slices[('h0)+:(32)];
+        view_axes$d = axes[('h0)+:(6)];
+        view_dx$d = 33'(dx[('h0)+:(32)]) | (33'(dx[('h3f)+:(1)]) << 'h20);
+        view_dy$d = 33'(dy[('h0)+:(32)]) | (33'(dy[('h3f)+:(1)]) << 'h20);
         nx$d = dims[('h0)+:(16)];
-        nx_last$d = dims[('h0)+:(16)] - 'h1;
-        ny_last$d = dims[('h10)+:(16)] - 'h1;
-        nz_last$d = dims[('h20)+:(16)] - 'h1;
-        z0 = slices[('h0)+:(16)];
-        z1 = slices[('h10)+:(16)];
-        border$d = slices[('h10)+:(16)] - slices[('h0)+:(16)];
-        u_from = axes[('h0)+:(2)];
-        v_from = axes[('h2)+:(2)];
-        w_from = axes[('h4)+:(2)];
+        nx_last$d = view_dims$q[('h0)+:(16)] - 'h1;
+        ny_last$d = view_dims$q[('h10)+:(16)] - 'h1;
+        nz_last$d = view_dims$q[('h20)+:(16)] - 'h1;
+        z0 = view_slices$q[('h0)+:(16)];
+        z1 = view_slices$q[('h10)+:(16)];
+        border$d = z1 - z0;
+        u_from = view_axes$q[('h0)+:(2)];
+        v_from = view_axes$q[('h2)+:(2)];
+        w_from = view_axes$q[('h4)+:(2)];
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = dx;
-        if (dx['h3f]) begin
-            dx_abs = 'h0 - dx;
+        dx_abs = view_dx$q[('h0)+:(32)];
+        if (view_dx$q['h20]) begin
+            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
         end
-        dy_abs = dy;
-        if (dy['h3f]) begin
-            dy_abs = 'h0 - dy;
+        dy_abs = view_dy$q[('h0)+:(32)];
+        if (view_dy$q['h20]) begin
+            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
         end
-        par_dxm$d = dx_abs[('h0)+:(32)];
-        par_dxn$d = dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dx_pos$d = ~dx['h3f] & (dx_abs[('h0)+:(32)] != 'h0);
-        par_dym$d = dy_abs[('h0)+:(32)];
-        par_dyn$d = dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
-        par_dy_pos$d = ~dy['h3f] & (dy_abs[('h0)+:(32)] != 'h0);
+        par_dxm$d = 16'(dx_abs);
+        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
+        par_dym$d = 16'(dy_abs);
+        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -7672,10 +8513,10 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             dxm = div$dx_mag;
             dym = div$dy_mag;
             inval = div$invalid;
-            dx_pos = ~dxn & (dxm != 'h0);
-            dx_neg_nz = dxn & (dxm != 'h0);
-            dy_pos = ~dyn_ & (dym != 'h0);
-            dy_neg_nz = dyn_ & (dym != 'h0);
+            dx_pos = div$dx_pos;
+            dx_neg_nz = div$dx_neg;
+            dy_pos = div$dy_pos;
+            dy_neg_nz = div$dy_neg;
         end
         if (is_pad) begin
             dxm = 'h0;
@@ -7719,6 +8560,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         z_q$d = n_s;
         addr_q$d = addr$q;
         addr_q2$d = addr_q$q;
+        addr_q3$d = addr_q2$q;
         pad_q$d = is_pad;
         sr_q$d = n_s == z0;
         edge_q$d = is_pad | x_first_r$q | y_first_r$q | (n_s == 'h0) | x_last_r$q | y_last_r$q | (n_s == nz_last$q);
@@ -7726,15 +8568,16 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         bx_q$d = bx;
         by_q$d = by;
         dxn_q$d = dxn;
-        dxm_q$d = 16'(dxm);
+        dxm_q$d = dxm;
         dyn_q$d = dyn_;
-        dym_q$d = 16'(dym);
+        dym_q$d = dym;
         inval_q$d = inval | is_pad;
         halo_q$d = (n_s + 'h1 <= z0) | (n_s > z1);
         ext_q$d = ext_data;
+        ext_q2$d = ext_q$q;
         value_pass = memory$read_data;
         if (external) begin
-            value_pass = ext_q$q;
+            value_pass = ext_q2$q;
         end
         if (pad_q$q) begin
             value_pass = 'h0;
@@ -7742,7 +8585,7 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         x = x_q$q;
         y = y_q$q;
         z = z_q$q;
-        address = addr_q2$q;
+        address = addr_q3$q;
         pad = pad_q$q;
         sr = sr_q$q;
         er = face_q$q != 'h0;
@@ -7879,6 +8722,23 @@ module top$cfb$lanes$3$addr_q2(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$addr_q2
+module top$cfb$lanes$3$addr_q3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$addr_q3
 module top$cfb$lanes$3$b_near_r(d,q,clock);
     
     // Module arguments
@@ -8134,6 +8994,23 @@ module top$cfb$lanes$3$ext_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$ext_q
+module top$cfb$lanes$3$ext_q2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$lanes$3$ext_q2
 module top$cfb$lanes$3$face_q(d,q,clock);
     
     // Module arguments
@@ -8283,48 +9160,85 @@ module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,wr
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [0:0] mem_0_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_0_7[16383:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
+    reg [7:0] r_0;
+    (* no_rw_check *)
     reg [0:0] mem_1_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_1_7[16383:0];
     reg [7:0] rd_1;
     reg [7:0] q_1;
+    reg [7:0] r_1;
+    (* no_rw_check *)
     reg [0:0] mem_2_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_2_7[16383:0];
     reg [7:0] rd_2;
     reg [7:0] q_2;
+    reg [7:0] r_2;
+    (* no_rw_check *)
     reg [0:0] mem_3_0[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_1[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_2[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_3[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_4[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_5[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_6[16383:0];
+    (* no_rw_check *)
     reg [0:0] mem_3_7[16383:0];
     reg [7:0] rd_3;
     reg [7:0] q_3;
+    reg [7:0] r_3;
     reg [1:0] sel_1;
     reg [1:0] sel_2;
+    reg [1:0] sel_3;
     
     always @(posedge read_clock) begin
        rd_0[0:0] <= mem_0_0[read_address[13:0]];
@@ -8336,6 +9250,7 @@ module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,wr
        rd_0[6:6] <= mem_0_6[read_address[13:0]];
        rd_0[7:7] <= mem_0_7[read_address[13:0]];
        q_0 <= rd_0;
+       r_0 <= q_0;
        rd_1[0:0] <= mem_1_0[read_address[13:0]];
        rd_1[1:1] <= mem_1_1[read_address[13:0]];
        rd_1[2:2] <= mem_1_2[read_address[13:0]];
@@ -8345,6 +9260,7 @@ module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,wr
        rd_1[6:6] <= mem_1_6[read_address[13:0]];
        rd_1[7:7] <= mem_1_7[read_address[13:0]];
        q_1 <= rd_1;
+       r_1 <= q_1;
        rd_2[0:0] <= mem_2_0[read_address[13:0]];
        rd_2[1:1] <= mem_2_1[read_address[13:0]];
        rd_2[2:2] <= mem_2_2[read_address[13:0]];
@@ -8354,6 +9270,7 @@ module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,wr
        rd_2[6:6] <= mem_2_6[read_address[13:0]];
        rd_2[7:7] <= mem_2_7[read_address[13:0]];
        q_2 <= rd_2;
+       r_2 <= q_2;
        rd_3[0:0] <= mem_3_0[read_address[13:0]];
        rd_3[1:1] <= mem_3_1[read_address[13:0]];
        rd_3[2:2] <= mem_3_2[read_address[13:0]];
@@ -8363,8 +9280,10 @@ module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,wr
        rd_3[6:6] <= mem_3_6[read_address[13:0]];
        rd_3[7:7] <= mem_3_7[read_address[13:0]];
        q_3 <= rd_3;
+       r_3 <= q_3;
        sel_1 <= read_address[15:14];
        sel_2 <= sel_1;
+       sel_3 <= sel_2;
     end
     
     always @(posedge write_clock) begin
@@ -8411,12 +9330,12 @@ module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,wr
     end
     
     always @(*) begin
-       case (sel_2)
-          0: read_data = {8'd0, q_0[7:0]};
-          1: read_data = {8'd0, q_1[7:0]};
-          2: read_data = {8'd0, q_2[7:0]};
-          3: read_data = {8'd0, q_3[7:0]};
-          default: read_data = {8'd0, q_0[7:0]};
+       case (sel_3)
+          0: read_data = {8'd0, r_0[7:0]};
+          1: read_data = {8'd0, r_1[7:0]};
+          2: read_data = {8'd0, r_2[7:0]};
+          3: read_data = {8'd0, r_3[7:0]};
+          default: read_data = {8'd0, r_0[7:0]};
        endcase
     end
 endmodule // top$cfb$lanes$3$memory
@@ -8542,13 +9461,13 @@ endmodule // top$cfb$lanes$3$par_dx_pos
 module top$cfb$lanes$3$par_dxm(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -8593,13 +9512,13 @@ endmodule // top$cfb$lanes$3$par_dy_pos
 module top$cfb$lanes$3$par_dym(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 16'h0;
     end
     
     (* keep *)
@@ -8692,6 +9611,91 @@ module top$cfb$lanes$3$sr_q(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$sr_q
+module top$cfb$lanes$3$view_axes(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$view_axes
+module top$cfb$lanes$3$view_dims(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$view_dims
+module top$cfb$lanes$3$view_dx(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$view_dx
+module top$cfb$lanes$3$view_dy(d,q,clock);
+    
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$view_dy
+module top$cfb$lanes$3$view_slices(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$cfb$lanes$3$view_slices
 module top$cfb$lanes$3$x_first_r(d,q,clock);
     
     // Module arguments
@@ -8913,6 +9917,23 @@ module top$cfb$nb_d4(d,q,clock);
     end
           
 endmodule // top$cfb$nb_d4
+module top$cfb$nb_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nb_d5
 module top$cfb$nb_end(d,q,clock);
     
     // Module arguments
@@ -9049,6 +10070,23 @@ module top$cfb$nbeam_d4(d,q,clock);
     end
           
 endmodule // top$cfb$nbeam_d4
+module top$cfb$nbeam_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$nbeam_d5
 module top$cfb$nbeam_end(d,q,clock);
     
     // Module arguments
@@ -9185,6 +10223,23 @@ module top$cfb$ns_d4(d,q,clock);
     end
           
 endmodule // top$cfb$ns_d4
+module top$cfb$ns_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$ns_d5
 module top$cfb$ns_end(d,q,clock);
     
     // Module arguments
@@ -9338,6 +10393,23 @@ module top$cfb$run_d4(d,q,clock);
     end
           
 endmodule // top$cfb$run_d4
+module top$cfb$run_d5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$cfb$run_d5
 module top$cfb$running(d,q,clock);
     
     // Module arguments

@@ -1265,6 +1265,7 @@ module top$lanes$0$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[13:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -1650,6 +1651,7 @@ module top$lanes$0$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[13:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -2051,6 +2053,7 @@ module top$lanes$0$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [7:0] mem_0_0[990:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -4512,6 +4515,7 @@ module top$lanes$1$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[13:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -4897,6 +4901,7 @@ module top$lanes$1$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[13:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -5298,6 +5303,7 @@ module top$lanes$1$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [7:0] mem_0_0[990:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -7759,6 +7765,7 @@ module top$lanes$2$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[13:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -8144,6 +8151,7 @@ module top$lanes$2$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[13:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -8545,6 +8553,7 @@ module top$lanes$2$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [7:0] mem_0_0[990:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -11006,6 +11015,7 @@ module top$lanes$3$taps$rows$beam0$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[13:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -11391,6 +11401,7 @@ module top$lanes$3$taps$rows$beam1$ram(read_address,read_clock,read_data,write_a
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
     (* ram_style = "distributed" *)
+    (* no_rw_check *)
     reg [7:0] mem_0_0[13:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;
@@ -11792,6 +11803,7 @@ module top$lanes$3$taps$rows$ring$ram(read_address,read_clock,read_data,write_ad
     
     // Update code (custom)
     wire [7:0] stored_word = {write_data[7:0]};
+    (* no_rw_check *)
     reg [7:0] mem_0_0[990:0];
     reg [7:0] rd_0;
     reg [7:0] q_0;

@@ -55,7 +55,7 @@ module top(clock,start,reset,load_enable,load_module,load_address,load_data,host
     
     // Constant declarations
     localparam  gradient = 1'b0;
-    localparam  flush_clocks = 8'h1a;
+    localparam  flush_clocks = 8'h1b;
     
     // Stub signals
     reg  view$clock;
