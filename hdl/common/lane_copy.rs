@@ -20,14 +20,27 @@ pub struct LaneCopy<T: Synth> {
     pub d: Signal<In, T>,
     pub q: Signal<Out, T>,
     pub clock: Signal<In, Clock>,
+    /// `(* keep *)` is emitted: false for a copy the build does not read
+    /// (a parallel view's increments in a perspective build), which
+    /// synthesis then removes as it would a plain register.
+    _keep: bool,
 }
 
 impl<T: Synth> Default for LaneCopy<T> {
     fn default() -> LaneCopy<T> {
+        LaneCopy::new(true)
+    }
+}
+
+impl<T: Synth> LaneCopy<T> {
+    /// A copy kept apart when `used`; otherwise a plain register, left for
+    /// synthesis to remove.
+    pub fn new(used: bool) -> LaneCopy<T> {
         LaneCopy {
             d: Default::default(),
             q: Default::default(),
             clock: Default::default(),
+            _keep: used,
         }
     }
 }
@@ -48,12 +61,12 @@ initial begin
    q = {:x};
 end
 
-(* keep *)
-always @(posedge clock) begin
+{}always @(posedge clock) begin
    q <= d;
 end
 ",
-            T::default().verilog()
+            T::default().verilog(),
+            if self._keep { "(* keep *)\n" } else { "" }
         ))
     }
     fn timing(&self) -> Vec<TimingInfo> {

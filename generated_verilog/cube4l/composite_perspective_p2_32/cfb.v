@@ -2568,7 +2568,6 @@ module top$cfb$lanes$0$par_dx_pos(d,q,clock);
        q = 1'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -2585,7 +2584,6 @@ module top$cfb$lanes$0$par_dxm(d,q,clock);
        q = 16'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -2602,7 +2600,6 @@ module top$cfb$lanes$0$par_dxn(d,q,clock);
        q = 1'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -2619,7 +2616,6 @@ module top$cfb$lanes$0$par_dy_pos(d,q,clock);
        q = 1'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -2636,7 +2632,6 @@ module top$cfb$lanes$0$par_dym(d,q,clock);
        q = 16'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -2653,7 +2648,6 @@ module top$cfb$lanes$0$par_dyn(d,q,clock);
        q = 1'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -2772,7 +2766,6 @@ module top$cfb$lanes$0$view_dx(d,q,clock);
        q = 33'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -2789,7 +2782,6 @@ module top$cfb$lanes$0$view_dy(d,q,clock);
        q = 33'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -4612,7 +4604,6 @@ module top$cfb$lanes$1$par_dx_pos(d,q,clock);
        q = 1'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -4629,7 +4620,6 @@ module top$cfb$lanes$1$par_dxm(d,q,clock);
        q = 16'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -4646,7 +4636,6 @@ module top$cfb$lanes$1$par_dxn(d,q,clock);
        q = 1'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -4663,7 +4652,6 @@ module top$cfb$lanes$1$par_dy_pos(d,q,clock);
        q = 1'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -4680,7 +4668,6 @@ module top$cfb$lanes$1$par_dym(d,q,clock);
        q = 16'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -4697,7 +4684,6 @@ module top$cfb$lanes$1$par_dyn(d,q,clock);
        q = 1'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -4816,7 +4802,6 @@ module top$cfb$lanes$1$view_dx(d,q,clock);
        q = 33'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
@@ -4833,7 +4818,6 @@ module top$cfb$lanes$1$view_dy(d,q,clock);
        q = 33'h0;
     end
     
-    (* keep *)
     always @(posedge clock) begin
        q <= d;
     end
