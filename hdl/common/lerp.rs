@@ -6,8 +6,11 @@
 //! compare and difference in a clock of their own, for speed: Cube-4L's
 //! bilinear unit). The rounded sum is one carry chain: `a` enters it
 //! shifted up with the rounding half below it, `(a << f) | 2^(f-1)`, an OR
-//! in the product's clock.
+//! in the product's clock. A one-multiplier lerp's product register is the
+//! multiplier's own ([`DspProduct`]); a wide lerp sums its two products
+//! before its register, in the fabric.
 
+use super::dsp_product::DspProduct;
 use rust_hdl::prelude::*;
 
 /// Clocks from the inputs to the lerp, built with [`Lerp::new`].
@@ -52,12 +55,16 @@ pub struct Lerp {
     a_in: Signal<Local, Bits<32>>,
     diff: Signal<Local, Bits<32>>,
     w_in: Signal<Local, Bits<16>>,
-    /// The product's clock.
+    /// The product's clock: a narrow lerp's product into the multiplier's
+    /// own register, a wide one's two products summed into `prod_q`.
+    narrow: DspProduct,
     prod: Signal<Local, Bits<64>>,
     up_q2: DFF<Bit>,
     /// `(a << f) | 2^(f-1)`.
     a_q2: DFF<Bits<64>>,
     prod_q: DFF<Bits<64>>,
+    /// The registered product, the narrow or the wide one.
+    prod_r: Signal<Local, Bits<64>>,
     /// The last clock's sum, `f` bits above the result.
     sum: Signal<Local, Bits<64>>,
     y_q: DFF<Bits<32>>,
@@ -96,10 +103,12 @@ impl Lerp {
             a_in: Default::default(),
             diff: Default::default(),
             w_in: Default::default(),
+            narrow: DspProduct::new(!wide),
             prod: Default::default(),
             up_q2: Default::default(),
             a_q2: Default::default(),
             prod_q: Default::default(),
+            prod_r: Default::default(),
             sum: Default::default(),
             y_q: Default::default(),
         }
@@ -132,7 +141,10 @@ impl Logic for Lerp {
             self.w_in.next = self.w_q.q.val();
         }
         // The product.
-        self.prod.next = bit_cast::<64, 32>(self.diff.val().get_bits::<16>(0) * self.w_in.val());
+        self.narrow.clock.next = self.clock.val();
+        self.narrow.a.next = self.diff.val().get_bits::<16>(0);
+        self.narrow.b.next = self.w_in.val();
+        self.prod.next = 0.into();
         if self.wide.val() {
             self.prod.next =
                 (bit_cast::<64, 32>(self.diff.val().get_bits::<16>(16) * self.w_in.val()) << 16)
@@ -144,9 +156,13 @@ impl Logic for Lerp {
         self.prod_q.d.next = self.prod.val();
         // The last clock: the product onto `a` and the rounding half, one
         // carry chain, and the shift.
-        self.sum.next = self.a_q2.q.val() - self.prod_q.q.val();
+        self.prod_r.next = bit_cast::<64, 32>(self.narrow.p.val());
+        if self.wide.val() {
+            self.prod_r.next = self.prod_q.q.val();
+        }
+        self.sum.next = self.a_q2.q.val() - self.prod_r.val();
         if self.up_q2.q.val() {
-            self.sum.next = self.a_q2.q.val() + self.prod_q.q.val();
+            self.sum.next = self.a_q2.q.val() + self.prod_r.val();
         }
         self.y_q.d.next = bit_cast::<32, 64>(self.sum.val() >> self.shift.val());
         self.y.next = self.y_q.q.val();

@@ -6,7 +6,8 @@
 //! carry chains in series (stage 5 three with normals wider than 5 bits):
 //!
 //! 1. the products of `q`'s magnitudes and the registers' (held in
-//!    registers of their own: they change only with a host write), their
+//!    registers of their own: they change only with a host write; the
+//!    products' registers the multipliers' own, [`DspProduct`]), their
 //!    signs, and `|q|²` from three square tables (LUT logic, no
 //!    multiplier);
 //! 2. the products in two's complement, the first two summed and the third
@@ -15,7 +16,8 @@
 //!    positive and saturated to `normal_bits + 11` bits, its tests
 //!    reductions of the sum's bits, not compares after it;
 //! 4. `t = dot · rnorm`, one 16x16 multiplier each for the dot product's
-//!    low 16 bits, and one for its bits above them (not built up to 5 bits);
+//!    low 16 bits, and one for its bits above them (not built up to 5
+//!    bits), each product in its multiplier's register;
 //! 5. the cosine index `min(1023, (t · 1023 + 2^25) >> 26)`, `t` the sum
 //!    of the two products (one carry chain more above 5 bits): the sum's
 //!    bits up to 2^36, and beside it the saturation as a compare of `t`
@@ -34,6 +36,7 @@
 //! lighting coefficients: a new view or light is six register words.
 
 use super::depth_rom::DepthRom;
+use super::dsp_product::DspProduct;
 use super::normal_quantizer::MAG_BITS;
 use super::regs::{Regs, ADDRESS_BITS};
 use super::table::Table;
@@ -87,8 +90,8 @@ pub struct Lighting {
     mh_q: [DFF<Bits<16>>; 3],
     /// Stage 1: the products' magnitudes and signs.
     qm: [Signal<Local, Bits<16>>; 3],
-    p_l: [DFF<Bits<32>>; 3],
-    p_h: [DFF<Bits<32>>; 3],
+    p_l: [DspProduct; 3],
+    p_h: [DspProduct; 3],
     sl_q: [DFF<Bit>; 3],
     sh_q: [DFF<Bit>; 3],
     t_pl: [Signal<Local, Bits<32>>; 3],
@@ -117,10 +120,10 @@ pub struct Lighting {
     /// it had mapped their products to multipliers).
     wide_dot: Constant<Bit>,
     /// Stage 4: the products of the low 16 bits and of the bits above.
-    t_l: DFF<Bits<32>>,
-    t_h: DFF<Bits<32>>,
-    u_l: DFF<Bits<32>>,
-    u_h: DFF<Bits<32>>,
+    t_l: DspProduct,
+    t_h: DspProduct,
+    u_l: DspProduct,
+    u_h: DspProduct,
     lit_4: DFF<Bit>,
     /// Stage 5.
     tt_l: Signal<Local, Bits<64>>,
@@ -204,8 +207,8 @@ impl Lighting {
             wide_dot: Constant::new(normal_bits + DIR_FRAC > 16),
             t_l: Default::default(),
             t_h: Default::default(),
-            u_l: Default::default(),
-            u_h: Default::default(),
+            u_l: DspProduct::new(normal_bits + DIR_FRAC > 16),
+            u_h: DspProduct::new(normal_bits + DIR_FRAC > 16),
             lit_4: Default::default(),
             tt_l: Default::default(),
             tt_h: Default::default(),
@@ -242,8 +245,8 @@ impl Logic for Lighting {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, n2_q, pair_l, pair_h, third_l, third_h, rn, d_l, d_h, rn_3, lit_3, t_l,
-            t_h, u_l, u_h, lit_4, idx_l, idx_h, lit_5, lit_6, diffuse_q, specular_q
+            self, clock, n2_q, pair_l, pair_h, third_l, third_h, rn, d_l, d_h, rn_3, lit_3, lit_4,
+            idx_l, idx_h, lit_5, lit_6, diffuse_q, specular_q
         );
         self.regs.clock.next = self.clock.val();
         self.regs.host_write.next = self.host_write.val();
@@ -296,11 +299,13 @@ impl Logic for Lighting {
             self.sh_q[i].clock.next = self.clock.val();
             self.p_l[i].clock.next = self.clock.val();
             self.p_h[i].clock.next = self.clock.val();
+            self.p_l[i].a.next = self.qm[i].val();
+            self.p_h[i].a.next = self.qm[i].val();
             self.square[i].address.next = self.q_mag[i].val();
             self.ml_q[i].d.next = self.m_l[i].val();
             self.mh_q[i].d.next = self.m_h[i].val();
-            self.p_l[i].d.next = self.qm[i].val() * self.ml_q[i].q.val();
-            self.p_h[i].d.next = self.qm[i].val() * self.mh_q[i].q.val();
+            self.p_l[i].b.next = self.ml_q[i].q.val();
+            self.p_h[i].b.next = self.mh_q[i].q.val();
         }
         // Stage 1: the products' magnitudes and signs, and |q|².
         self.sl_q[0].d.next = self.q_neg[0].val() ^ self.regs.q[0].val().get_bit(15);
@@ -315,13 +320,13 @@ impl Logic for Lighting {
         // Stage 2: the products in two's complement, the first two summed,
         // and 1 / |q|.
         for i in 0..3 {
-            self.t_pl[i].next = self.p_l[i].q.val();
+            self.t_pl[i].next = self.p_l[i].p.val();
             if self.sl_q[i].q.val() {
-                self.t_pl[i].next = 0 - self.p_l[i].q.val();
+                self.t_pl[i].next = 0 - self.p_l[i].p.val();
             }
-            self.t_ph[i].next = self.p_h[i].q.val();
+            self.t_ph[i].next = self.p_h[i].p.val();
             if self.sh_q[i].q.val() {
-                self.t_ph[i].next = 0 - self.p_h[i].q.val();
+                self.t_ph[i].next = 0 - self.p_h[i].p.val();
             }
         }
         self.pair_l.d.next = self.t_pl[0].val() + self.t_pl[1].val();
@@ -352,25 +357,29 @@ impl Logic for Lighting {
         self.lit_3.d.next = !self.dot_l.val().get_bit(31) & (self.dot_l.val() != 0);
         // Stage 4: times 1 / |q|, the dot product's low 16 bits and the
         // bits above them (zero up to 5-bit normals) apart.
-        self.t_l.d.next = self.d_l.q.val().get_bits::<16>(0) * self.rn_3.q.val();
-        self.t_h.d.next = self.d_h.q.val().get_bits::<16>(0) * self.rn_3.q.val();
-        self.u_l.d.next = 0.into();
-        self.u_h.d.next = 0.into();
-        if self.wide_dot.val() {
-            self.u_l.d.next = self.d_l.q.val().get_bits::<16>(16) * self.rn_3.q.val();
-            self.u_h.d.next = self.d_h.q.val().get_bits::<16>(16) * self.rn_3.q.val();
-        }
+        self.t_l.clock.next = self.clock.val();
+        self.t_h.clock.next = self.clock.val();
+        self.u_l.clock.next = self.clock.val();
+        self.u_h.clock.next = self.clock.val();
+        self.t_l.a.next = self.d_l.q.val().get_bits::<16>(0);
+        self.t_h.a.next = self.d_h.q.val().get_bits::<16>(0);
+        self.u_l.a.next = self.d_l.q.val().get_bits::<16>(16);
+        self.u_h.a.next = self.d_h.q.val().get_bits::<16>(16);
+        self.t_l.b.next = self.rn_3.q.val();
+        self.t_h.b.next = self.rn_3.q.val();
+        self.u_l.b.next = self.rn_3.q.val();
+        self.u_h.b.next = self.rn_3.q.val();
         self.lit_4.d.next = self.lit_3.q.val();
         // Stage 5: the cosine to the nearest table entry; only the index's
         // 10 bits of the sum are used, so synthesis builds its chains no
         // wider than 2^36.
-        self.tt_l.next = bit_cast::<64, 32>(self.t_l.q.val());
-        self.tt_h.next = bit_cast::<64, 32>(self.t_h.q.val());
+        self.tt_l.next = bit_cast::<64, 32>(self.t_l.p.val());
+        self.tt_h.next = bit_cast::<64, 32>(self.t_h.p.val());
         if self.wide_dot.val() {
             self.tt_l.next =
-                bit_cast::<64, 32>(self.t_l.q.val()) + (bit_cast::<64, 32>(self.u_l.q.val()) << 16);
+                bit_cast::<64, 32>(self.t_l.p.val()) + (bit_cast::<64, 32>(self.u_l.p.val()) << 16);
             self.tt_h.next =
-                bit_cast::<64, 32>(self.t_h.q.val()) + (bit_cast::<64, 32>(self.u_h.q.val()) << 16);
+                bit_cast::<64, 32>(self.t_h.p.val()) + (bit_cast::<64, 32>(self.u_h.p.val()) << 16);
         }
         self.i_l.next = bit_cast::<COS_BITS_U, 64>(
             ((self.tt_l.val() << 10) - self.tt_l.val() + self.half_ulp.val()) >> self.shift.val(),

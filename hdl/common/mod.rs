@@ -9,13 +9,15 @@
 //! host's [`regs`] and [`table`]s (written between frames), the [`shader`]
 //! (classification, with the [`gradient_bin`] of gradient opacity and its
 //! [`square`]s, and the [`lighting`] of the [`normal_quantizer`]'s normal),
-//! [`lanes`], the lane counts the RTL is built for, and [`lane_copy`], a
+//! [`lanes`], the lane counts the RTL is built for, [`lane_copy`], a
 //! lane's own register of a frame's value, never merged with its
-//! neighbours'.
+//! neighbours', and [`dsp_product`], a registered product whose register
+//! is the multiplier's own on an ECP5.
 
 pub mod banked_line;
 pub mod delay_line;
 pub mod depth_rom;
+pub mod dsp_product;
 pub mod gradient_bin;
 pub mod lane_copy;
 pub mod lanes;

@@ -8,6 +8,7 @@
 use super::config::PipelineConfig;
 use super::divider::Divider;
 use crate::common::bits16;
+use crate::common::dsp_product::DspProduct;
 use crate::common::lane_copy::LaneCopy;
 use crate::common::ram::DepthRam;
 use rust_hdl::prelude::*;
@@ -163,9 +164,10 @@ pub struct CfbLane<const A: usize> {
     a_w: DFF<Bits<16>>,
     a_pad: DFF<Bit>,
     m_u: DFF<Bits<32>>,
-    m_v: DFF<Bits<32>>,
-    m_w_lo: DFF<Bits<32>>,
-    m_w_hi: DFF<Bits<32>>,
+    /// The products' registers are the multipliers' own ([`DspProduct`]).
+    m_v: DspProduct,
+    m_w_lo: DspProduct,
+    m_w_hi: DspProduct,
     m_pad: DFF<Bit>,
     addr: DFF<Bits<32>>,
     is_pad: Signal<Local, Bit>,
@@ -410,9 +412,6 @@ impl<const A: usize> Logic for CfbLane<A> {
             a_w,
             a_pad,
             m_u,
-            m_v,
-            m_w_lo,
-            m_w_hi,
             m_pad,
             addr,
             xc_r,
@@ -519,14 +518,20 @@ impl<const A: usize> Logic for CfbLane<A> {
         }
         // 2: the products of i = u div P + v*b + w*b*n_v.
         self.m_u.d.next = bit_cast::<32, 16>(self.a_u.q.val()) >> self.p_shift.val();
-        self.m_v.d.next = self.a_v.q.val() * self.b_u.q.val();
-        self.m_w_lo.d.next = self.a_w.q.val() * self.slab_lo.q.val();
-        self.m_w_hi.d.next = self.a_w.q.val() * self.slab_hi.q.val();
+        self.m_v.clock.next = self.clock.val();
+        self.m_w_lo.clock.next = self.clock.val();
+        self.m_w_hi.clock.next = self.clock.val();
+        self.m_v.a.next = self.a_v.q.val();
+        self.m_v.b.next = self.b_u.q.val();
+        self.m_w_lo.a.next = self.a_w.q.val();
+        self.m_w_lo.b.next = self.slab_lo.q.val();
+        self.m_w_hi.a.next = self.a_w.q.val();
+        self.m_w_hi.b.next = self.slab_hi.q.val();
         self.m_pad.d.next = self.a_pad.q.val();
         // 3: their sum, registered apart from the RAM's address register
         // (it fans out to every block RAM of the module).
         self.addr.d.next =
-            self.m_u.q.val() + self.m_v.q.val() + self.m_w_lo.q.val() + (self.m_w_hi.q.val() << 16);
+            self.m_u.q.val() + self.m_v.p.val() + self.m_w_lo.p.val() + (self.m_w_hi.p.val() << 16);
         if self.m_pad.q.val() {
             self.addr.d.next = 0.into();
         }

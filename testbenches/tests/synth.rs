@@ -52,6 +52,17 @@ fn a_small_mip_pipeline_synthesizes_and_routes_on_an_ecp5() {
     assert!(r.flip_flops > 300, "{r:?}");
     assert!((1..=4).contains(&r.block_rams), "{r:?}");
     assert!((1..=8).contains(&r.dsps), "{r:?}");
+    // Every product's register is its multiplier's own (`CUBE_ECP5_DSP`).
+    let netlist: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("synth.json")).unwrap()).unwrap();
+    let output_registered = netlist["modules"]
+        .as_object()
+        .unwrap()
+        .values()
+        .flat_map(|m| m["cells"].as_object().unwrap().values())
+        .filter(|c| c["type"] == "MULT18X18D" && c["parameters"]["REG_OUTPUT_CLK"] == "CLK0")
+        .count();
+    assert_eq!(output_registered as u64, r.dsps, "{r:?}");
     assert_eq!(
         r.ram_bits,
         18432 * r.block_rams + 64 * r.cell_types.get("TRELLIS_DPR16X4").copied().unwrap_or(0)

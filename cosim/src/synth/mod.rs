@@ -5,8 +5,10 @@
 //!
 //! Resource counts come from yosys `stat` after the target's flow:
 //! `synth_ice40 -dsp -abc9` (SB_LUT4, SB_DFF*, SB_RAM40_4K, SB_MAC16),
-//! `synth_ecp5 -noiopad` (LUT4, TRELLIS_FF, DP16KD, MULT18X18D; run with the
-//! PyPI build of yosys, as Debian's 0.23 maps ECP5 far worse),
+//! `synth_ecp5 -noiopad` (LUT4, TRELLIS_FF, DP16KD, MULT18X18D; with
+//! `CUBE_ECP5_DSP` defined, so that product registers are the multipliers'
+//! own; run with the PyPI build of yosys, as Debian's 0.23 maps ECP5 far
+//! worse),
 //! `synth_xilinx -family xc7` (LUT1-6, FD*, RAMB18E1/RAMB36E1, DSP48E1) or
 //! generic `synth` (gates; memories become flip-flops, multipliers gates).
 
@@ -203,8 +205,15 @@ pub fn synthesize(
     if target == Target::Ice40 {
         no_lut_ram(dir, files)?;
     }
+    // An ECP5 build's product registers go into its multipliers
+    // (`hdl::common::dsp_product`).
+    let define = if target == Target::Ecp5 {
+        "-DCUBE_ECP5_DSP "
+    } else {
+        ""
+    };
     let script = format!(
-        "read_verilog -sv {}; {}; tee -q -o stat.txt stat",
+        "read_verilog -sv {define}{}; {}; tee -q -o stat.txt stat",
         files.join(" "),
         target.script()
     );

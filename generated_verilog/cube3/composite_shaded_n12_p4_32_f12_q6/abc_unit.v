@@ -1980,6 +1980,10 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -2001,6 +2005,7 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -2023,6 +2028,12 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$0$back_bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -2082,16 +2093,23 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -2149,6 +2167,41 @@ module top$pipeline$abc$estimators$0$back_bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$back_bottom$diff_q
+module top$pipeline$abc$estimators$0$back_bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$0$back_bottom$narrow
 module top$pipeline$abc$estimators$0$back_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -2262,6 +2315,10 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -2283,6 +2340,7 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -2305,6 +2363,12 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$0$back_top$up_q2 up_q2(
         .d(up_q2$d),
@@ -2364,16 +2428,23 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -2431,6 +2502,41 @@ module top$pipeline$abc$estimators$0$back_top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$back_top$diff_q
+module top$pipeline$abc$estimators$0$back_top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$0$back_top$narrow
 module top$pipeline$abc$estimators$0$back_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -2544,6 +2650,10 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -2565,6 +2675,7 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -2587,6 +2698,12 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_y$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$0$back_y$up_q2 up_q2(
         .d(up_q2$d),
@@ -2646,16 +2763,23 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -2713,6 +2837,41 @@ module top$pipeline$abc$estimators$0$back_y$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$back_y$diff_q
+module top$pipeline$abc$estimators$0$back_y$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$0$back_y$narrow
 module top$pipeline$abc$estimators$0$back_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -3285,6 +3444,10 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -3306,6 +3469,7 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -3328,6 +3492,12 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$0$front_bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -3387,16 +3557,23 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -3454,6 +3631,41 @@ module top$pipeline$abc$estimators$0$front_bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$front_bottom$diff_q
+module top$pipeline$abc$estimators$0$front_bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$0$front_bottom$narrow
 module top$pipeline$abc$estimators$0$front_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -3567,6 +3779,10 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -3588,6 +3804,7 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -3610,6 +3827,12 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$0$front_top$up_q2 up_q2(
         .d(up_q2$d),
@@ -3669,16 +3892,23 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -3736,6 +3966,41 @@ module top$pipeline$abc$estimators$0$front_top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$front_top$diff_q
+module top$pipeline$abc$estimators$0$front_top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$0$front_top$narrow
 module top$pipeline$abc$estimators$0$front_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -3849,6 +4114,10 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -3870,6 +4139,7 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -3892,6 +4162,12 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_y$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$0$front_y$up_q2 up_q2(
         .d(up_q2$d),
@@ -3951,16 +4227,23 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -4018,6 +4301,41 @@ module top$pipeline$abc$estimators$0$front_y$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$front_y$diff_q
+module top$pipeline$abc$estimators$0$front_y$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$0$front_y$narrow
 module top$pipeline$abc$estimators$0$front_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -5766,6 +6084,10 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -5787,6 +6109,7 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -5809,6 +6132,12 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$1$back_bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -5868,16 +6197,23 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -5935,6 +6271,41 @@ module top$pipeline$abc$estimators$1$back_bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$back_bottom$diff_q
+module top$pipeline$abc$estimators$1$back_bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$1$back_bottom$narrow
 module top$pipeline$abc$estimators$1$back_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -6048,6 +6419,10 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -6069,6 +6444,7 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -6091,6 +6467,12 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$1$back_top$up_q2 up_q2(
         .d(up_q2$d),
@@ -6150,16 +6532,23 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -6217,6 +6606,41 @@ module top$pipeline$abc$estimators$1$back_top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$back_top$diff_q
+module top$pipeline$abc$estimators$1$back_top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$1$back_top$narrow
 module top$pipeline$abc$estimators$1$back_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -6330,6 +6754,10 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -6351,6 +6779,7 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -6373,6 +6802,12 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_y$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$1$back_y$up_q2 up_q2(
         .d(up_q2$d),
@@ -6432,16 +6867,23 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -6499,6 +6941,41 @@ module top$pipeline$abc$estimators$1$back_y$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$back_y$diff_q
+module top$pipeline$abc$estimators$1$back_y$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$1$back_y$narrow
 module top$pipeline$abc$estimators$1$back_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -7071,6 +7548,10 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -7092,6 +7573,7 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -7114,6 +7596,12 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$1$front_bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -7173,16 +7661,23 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -7240,6 +7735,41 @@ module top$pipeline$abc$estimators$1$front_bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$front_bottom$diff_q
+module top$pipeline$abc$estimators$1$front_bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$1$front_bottom$narrow
 module top$pipeline$abc$estimators$1$front_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -7353,6 +7883,10 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -7374,6 +7908,7 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -7396,6 +7931,12 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$1$front_top$up_q2 up_q2(
         .d(up_q2$d),
@@ -7455,16 +7996,23 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -7522,6 +8070,41 @@ module top$pipeline$abc$estimators$1$front_top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$front_top$diff_q
+module top$pipeline$abc$estimators$1$front_top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$1$front_top$narrow
 module top$pipeline$abc$estimators$1$front_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -7635,6 +8218,10 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -7656,6 +8243,7 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -7678,6 +8266,12 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_y$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$1$front_y$up_q2 up_q2(
         .d(up_q2$d),
@@ -7737,16 +8331,23 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -7804,6 +8405,41 @@ module top$pipeline$abc$estimators$1$front_y$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$front_y$diff_q
+module top$pipeline$abc$estimators$1$front_y$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$1$front_y$narrow
 module top$pipeline$abc$estimators$1$front_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -9552,6 +10188,10 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -9573,6 +10213,7 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -9595,6 +10236,12 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$2$back_bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$2$back_bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -9654,16 +10301,23 @@ module top$pipeline$abc$estimators$2$back_bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -9721,6 +10375,41 @@ module top$pipeline$abc$estimators$2$back_bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$back_bottom$diff_q
+module top$pipeline$abc$estimators$2$back_bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$2$back_bottom$narrow
 module top$pipeline$abc$estimators$2$back_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -9834,6 +10523,10 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -9855,6 +10548,7 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -9877,6 +10571,12 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$2$back_top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$2$back_top$up_q2 up_q2(
         .d(up_q2$d),
@@ -9936,16 +10636,23 @@ module top$pipeline$abc$estimators$2$back_top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -10003,6 +10710,41 @@ module top$pipeline$abc$estimators$2$back_top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$back_top$diff_q
+module top$pipeline$abc$estimators$2$back_top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$2$back_top$narrow
 module top$pipeline$abc$estimators$2$back_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -10116,6 +10858,10 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -10137,6 +10883,7 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -10159,6 +10906,12 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$2$back_y$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$2$back_y$up_q2 up_q2(
         .d(up_q2$d),
@@ -10218,16 +10971,23 @@ module top$pipeline$abc$estimators$2$back_y(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -10285,6 +11045,41 @@ module top$pipeline$abc$estimators$2$back_y$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$back_y$diff_q
+module top$pipeline$abc$estimators$2$back_y$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$2$back_y$narrow
 module top$pipeline$abc$estimators$2$back_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -10857,6 +11652,10 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -10878,6 +11677,7 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -10900,6 +11700,12 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$2$front_bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$2$front_bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -10959,16 +11765,23 @@ module top$pipeline$abc$estimators$2$front_bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -11026,6 +11839,41 @@ module top$pipeline$abc$estimators$2$front_bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$front_bottom$diff_q
+module top$pipeline$abc$estimators$2$front_bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$2$front_bottom$narrow
 module top$pipeline$abc$estimators$2$front_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -11139,6 +11987,10 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -11160,6 +12012,7 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -11182,6 +12035,12 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$2$front_top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$2$front_top$up_q2 up_q2(
         .d(up_q2$d),
@@ -11241,16 +12100,23 @@ module top$pipeline$abc$estimators$2$front_top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -11308,6 +12174,41 @@ module top$pipeline$abc$estimators$2$front_top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$front_top$diff_q
+module top$pipeline$abc$estimators$2$front_top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$2$front_top$narrow
 module top$pipeline$abc$estimators$2$front_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -11421,6 +12322,10 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -11442,6 +12347,7 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -11464,6 +12370,12 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$2$front_y$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$2$front_y$up_q2 up_q2(
         .d(up_q2$d),
@@ -11523,16 +12435,23 @@ module top$pipeline$abc$estimators$2$front_y(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -11590,6 +12509,41 @@ module top$pipeline$abc$estimators$2$front_y$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$2$front_y$diff_q
+module top$pipeline$abc$estimators$2$front_y$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$2$front_y$narrow
 module top$pipeline$abc$estimators$2$front_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -13338,6 +14292,10 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -13359,6 +14317,7 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -13381,6 +14340,12 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$3$back_bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$3$back_bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -13440,16 +14405,23 @@ module top$pipeline$abc$estimators$3$back_bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -13507,6 +14479,41 @@ module top$pipeline$abc$estimators$3$back_bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$back_bottom$diff_q
+module top$pipeline$abc$estimators$3$back_bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$3$back_bottom$narrow
 module top$pipeline$abc$estimators$3$back_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -13620,6 +14627,10 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -13641,6 +14652,7 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -13663,6 +14675,12 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$3$back_top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$3$back_top$up_q2 up_q2(
         .d(up_q2$d),
@@ -13722,16 +14740,23 @@ module top$pipeline$abc$estimators$3$back_top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -13789,6 +14814,41 @@ module top$pipeline$abc$estimators$3$back_top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$back_top$diff_q
+module top$pipeline$abc$estimators$3$back_top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$3$back_top$narrow
 module top$pipeline$abc$estimators$3$back_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -13902,6 +14962,10 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -13923,6 +14987,7 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -13945,6 +15010,12 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$3$back_y$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$3$back_y$up_q2 up_q2(
         .d(up_q2$d),
@@ -14004,16 +15075,23 @@ module top$pipeline$abc$estimators$3$back_y(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -14071,6 +15149,41 @@ module top$pipeline$abc$estimators$3$back_y$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$back_y$diff_q
+module top$pipeline$abc$estimators$3$back_y$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$3$back_y$narrow
 module top$pipeline$abc$estimators$3$back_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -14643,6 +15756,10 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -14664,6 +15781,7 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -14686,6 +15804,12 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$3$front_bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$3$front_bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -14745,16 +15869,23 @@ module top$pipeline$abc$estimators$3$front_bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -14812,6 +15943,41 @@ module top$pipeline$abc$estimators$3$front_bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$front_bottom$diff_q
+module top$pipeline$abc$estimators$3$front_bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$3$front_bottom$narrow
 module top$pipeline$abc$estimators$3$front_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -14925,6 +16091,10 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -14946,6 +16116,7 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -14968,6 +16139,12 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$3$front_top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$3$front_top$up_q2 up_q2(
         .d(up_q2$d),
@@ -15027,16 +16204,23 @@ module top$pipeline$abc$estimators$3$front_top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -15094,6 +16278,41 @@ module top$pipeline$abc$estimators$3$front_top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$front_top$diff_q
+module top$pipeline$abc$estimators$3$front_top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$3$front_top$narrow
 module top$pipeline$abc$estimators$3$front_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -15207,6 +16426,10 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -15228,6 +16451,7 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -15250,6 +16474,12 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$3$front_y$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$3$front_y$up_q2 up_q2(
         .d(up_q2$d),
@@ -15309,16 +16539,23 @@ module top$pipeline$abc$estimators$3$front_y(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -15376,6 +16613,41 @@ module top$pipeline$abc$estimators$3$front_y$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$3$front_y$diff_q
+module top$pipeline$abc$estimators$3$front_y$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$3$front_y$narrow
 module top$pipeline$abc$estimators$3$front_y$prod_q(d,q,clock);
     
     // Module arguments

@@ -1486,24 +1486,30 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
     reg  [15:0] mh_q$2$d;
     wire  [15:0] mh_q$2$q;
     reg  mh_q$2$clock;
-    reg  [31:0] p_l$0$d;
-    wire  [31:0] p_l$0$q;
     reg  p_l$0$clock;
-    reg  [31:0] p_l$1$d;
-    wire  [31:0] p_l$1$q;
+    reg  [15:0] p_l$0$a;
+    reg  [15:0] p_l$0$b;
+    wire  [31:0] p_l$0$p;
     reg  p_l$1$clock;
-    reg  [31:0] p_l$2$d;
-    wire  [31:0] p_l$2$q;
+    reg  [15:0] p_l$1$a;
+    reg  [15:0] p_l$1$b;
+    wire  [31:0] p_l$1$p;
     reg  p_l$2$clock;
-    reg  [31:0] p_h$0$d;
-    wire  [31:0] p_h$0$q;
+    reg  [15:0] p_l$2$a;
+    reg  [15:0] p_l$2$b;
+    wire  [31:0] p_l$2$p;
     reg  p_h$0$clock;
-    reg  [31:0] p_h$1$d;
-    wire  [31:0] p_h$1$q;
+    reg  [15:0] p_h$0$a;
+    reg  [15:0] p_h$0$b;
+    wire  [31:0] p_h$0$p;
     reg  p_h$1$clock;
-    reg  [31:0] p_h$2$d;
-    wire  [31:0] p_h$2$q;
+    reg  [15:0] p_h$1$a;
+    reg  [15:0] p_h$1$b;
+    wire  [31:0] p_h$1$p;
     reg  p_h$2$clock;
+    reg  [15:0] p_h$2$a;
+    reg  [15:0] p_h$2$b;
+    wire  [31:0] p_h$2$p;
     reg  sl_q$0$d;
     wire  sl_q$0$q;
     reg  sl_q$0$clock;
@@ -1552,18 +1558,22 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
     reg  lit_3$d;
     wire  lit_3$q;
     reg  lit_3$clock;
-    reg  [31:0] t_l$d;
-    wire  [31:0] t_l$q;
     reg  t_l$clock;
-    reg  [31:0] t_h$d;
-    wire  [31:0] t_h$q;
+    reg  [15:0] t_l$a;
+    reg  [15:0] t_l$b;
+    wire  [31:0] t_l$p;
     reg  t_h$clock;
-    reg  [31:0] u_l$d;
-    wire  [31:0] u_l$q;
+    reg  [15:0] t_h$a;
+    reg  [15:0] t_h$b;
+    wire  [31:0] t_h$p;
     reg  u_l$clock;
-    reg  [31:0] u_h$d;
-    wire  [31:0] u_h$q;
+    reg  [15:0] u_l$a;
+    reg  [15:0] u_l$b;
+    wire  [31:0] u_l$p;
     reg  u_h$clock;
+    reg  [15:0] u_h$a;
+    reg  [15:0] u_h$b;
+    wire  [31:0] u_h$p;
     reg  lit_4$d;
     wire  lit_4$q;
     reg  lit_4$clock;
@@ -1682,34 +1692,40 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
         .clock(mh_q$2$clock)
     );
     top$pipeline$shade$0$lighting$p_l$0 p_l$0(
-        .d(p_l$0$d),
-        .q(p_l$0$q),
-        .clock(p_l$0$clock)
+        .clock(p_l$0$clock),
+        .a(p_l$0$a),
+        .b(p_l$0$b),
+        .p(p_l$0$p)
     );
     top$pipeline$shade$0$lighting$p_l$1 p_l$1(
-        .d(p_l$1$d),
-        .q(p_l$1$q),
-        .clock(p_l$1$clock)
+        .clock(p_l$1$clock),
+        .a(p_l$1$a),
+        .b(p_l$1$b),
+        .p(p_l$1$p)
     );
     top$pipeline$shade$0$lighting$p_l$2 p_l$2(
-        .d(p_l$2$d),
-        .q(p_l$2$q),
-        .clock(p_l$2$clock)
+        .clock(p_l$2$clock),
+        .a(p_l$2$a),
+        .b(p_l$2$b),
+        .p(p_l$2$p)
     );
     top$pipeline$shade$0$lighting$p_h$0 p_h$0(
-        .d(p_h$0$d),
-        .q(p_h$0$q),
-        .clock(p_h$0$clock)
+        .clock(p_h$0$clock),
+        .a(p_h$0$a),
+        .b(p_h$0$b),
+        .p(p_h$0$p)
     );
     top$pipeline$shade$0$lighting$p_h$1 p_h$1(
-        .d(p_h$1$d),
-        .q(p_h$1$q),
-        .clock(p_h$1$clock)
+        .clock(p_h$1$clock),
+        .a(p_h$1$a),
+        .b(p_h$1$b),
+        .p(p_h$1$p)
     );
     top$pipeline$shade$0$lighting$p_h$2 p_h$2(
-        .d(p_h$2$d),
-        .q(p_h$2$q),
-        .clock(p_h$2$clock)
+        .clock(p_h$2$clock),
+        .a(p_h$2$a),
+        .b(p_h$2$b),
+        .p(p_h$2$p)
     );
     top$pipeline$shade$0$lighting$sl_q$0 sl_q$0(
         .d(sl_q$0$d),
@@ -1792,24 +1808,28 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
         .clock(lit_3$clock)
     );
     top$pipeline$shade$0$lighting$t_l t_l(
-        .d(t_l$d),
-        .q(t_l$q),
-        .clock(t_l$clock)
+        .clock(t_l$clock),
+        .a(t_l$a),
+        .b(t_l$b),
+        .p(t_l$p)
     );
     top$pipeline$shade$0$lighting$t_h t_h(
-        .d(t_h$d),
-        .q(t_h$q),
-        .clock(t_h$clock)
+        .clock(t_h$clock),
+        .a(t_h$a),
+        .b(t_h$b),
+        .p(t_h$p)
     );
     top$pipeline$shade$0$lighting$u_l u_l(
-        .d(u_l$d),
-        .q(u_l$q),
-        .clock(u_l$clock)
+        .clock(u_l$clock),
+        .a(u_l$a),
+        .b(u_l$b),
+        .p(u_l$p)
     );
     top$pipeline$shade$0$lighting$u_h u_h(
-        .d(u_h$d),
-        .q(u_h$q),
-        .clock(u_h$clock)
+        .clock(u_h$clock),
+        .a(u_h$a),
+        .b(u_h$b),
+        .p(u_h$p)
     );
     top$pipeline$shade$0$lighting$lit_4 lit_4(
         .d(lit_4$d),
@@ -1859,10 +1879,6 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
         d_h$clock = clock;
         rn_3$clock = clock;
         lit_3$clock = clock;
-        t_l$clock = clock;
-        t_h$clock = clock;
-        u_l$clock = clock;
-        u_h$clock = clock;
         lit_4$clock = clock;
         idx_l$clock = clock;
         idx_h$clock = clock;
@@ -1880,10 +1896,6 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
         d_h$d = d_h$q;
         rn_3$d = rn_3$q;
         lit_3$d = lit_3$q;
-        t_l$d = t_l$q;
-        t_h$d = t_h$q;
-        u_l$d = u_l$q;
-        u_h$d = u_h$q;
         lit_4$d = lit_4$q;
         idx_l$d = idx_l$q;
         idx_h$d = idx_h$q;
@@ -1936,33 +1948,39 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
         sh_q$0$clock = clock;
         p_l$0$clock = clock;
         p_h$0$clock = clock;
+        p_l$0$a = qm$0;
+        p_h$0$a = qm$0;
         square$0$address = q_mag$0;
         ml_q$0$d = m_l$0;
         mh_q$0$d = m_h$0;
-        p_l$0$d = qm$0 * ml_q$0$q;
-        p_h$0$d = qm$0 * mh_q$0$q;
+        p_l$0$b = ml_q$0$q;
+        p_h$0$b = mh_q$0$q;
         ml_q$1$clock = clock;
         mh_q$1$clock = clock;
         sl_q$1$clock = clock;
         sh_q$1$clock = clock;
         p_l$1$clock = clock;
         p_h$1$clock = clock;
+        p_l$1$a = qm$1;
+        p_h$1$a = qm$1;
         square$1$address = q_mag$1;
         ml_q$1$d = m_l$1;
         mh_q$1$d = m_h$1;
-        p_l$1$d = qm$1 * ml_q$1$q;
-        p_h$1$d = qm$1 * mh_q$1$q;
+        p_l$1$b = ml_q$1$q;
+        p_h$1$b = mh_q$1$q;
         ml_q$2$clock = clock;
         mh_q$2$clock = clock;
         sl_q$2$clock = clock;
         sh_q$2$clock = clock;
         p_l$2$clock = clock;
         p_h$2$clock = clock;
+        p_l$2$a = qm$2;
+        p_h$2$a = qm$2;
         square$2$address = q_mag$2;
         ml_q$2$d = m_l$2;
         mh_q$2$d = m_h$2;
-        p_l$2$d = qm$2 * ml_q$2$q;
-        p_h$2$d = qm$2 * mh_q$2$q;
+        p_l$2$b = ml_q$2$q;
+        p_h$2$b = mh_q$2$q;
         sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
         sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
         sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
@@ -1971,29 +1989,29 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
         sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
         n2 = square$0$data + square$1$data + square$2$data;
         n2_q$d = n2;
-        t_pl$0 = p_l$0$q;
+        t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$q;
+            t_pl$0 = 'h0 - p_l$0$p;
         end
-        t_ph$0 = p_h$0$q;
+        t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$q;
+            t_ph$0 = 'h0 - p_h$0$p;
         end
-        t_pl$1 = p_l$1$q;
+        t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$q;
+            t_pl$1 = 'h0 - p_l$1$p;
         end
-        t_ph$1 = p_h$1$q;
+        t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$q;
+            t_ph$1 = 'h0 - p_h$1$p;
         end
-        t_pl$2 = p_l$2$q;
+        t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$q;
+            t_pl$2 = 'h0 - p_l$2$p;
         end
-        t_ph$2 = p_h$2$q;
+        t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$q;
+            t_ph$2 = 'h0 - p_h$2$p;
         end
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
@@ -2019,20 +2037,24 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
         end
         rn_3$d = rn$q;
         lit_3$d = ~dot_l['h1f] & (dot_l != 'h0);
-        t_l$d = d_l$q[('h0)+:(16)] * rn_3$q;
-        t_h$d = d_h$q[('h0)+:(16)] * rn_3$q;
-        u_l$d = 'h0;
-        u_h$d = 'h0;
-        if (wide_dot) begin
-            u_l$d = d_l$q[('h10)+:(16)] * rn_3$q;
-            u_h$d = d_h$q[('h10)+:(16)] * rn_3$q;
-        end
+        t_l$clock = clock;
+        t_h$clock = clock;
+        u_l$clock = clock;
+        u_h$clock = clock;
+        t_l$a = d_l$q[('h0)+:(16)];
+        t_h$a = d_h$q[('h0)+:(16)];
+        u_l$a = d_l$q[('h10)+:(16)];
+        u_h$a = d_h$q[('h10)+:(16)];
+        t_l$b = rn_3$q;
+        t_h$b = rn_3$q;
+        u_l$b = rn_3$q;
+        u_h$b = rn_3$q;
         lit_4$d = lit_3$q;
-        tt_l = 64'(t_l$q);
-        tt_h = 64'(t_h$q);
+        tt_l = 64'(t_l$p);
+        tt_h = 64'(t_h$p);
         if (wide_dot) begin
-            tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
-            tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
+            tt_l = 64'(t_l$p) + (64'(u_l$p) << 'h10);
+            tt_h = 64'(t_h$p) + (64'(u_h$p) << 'h10);
         end
         i_l = 10'(((tt_l << 'ha) - tt_l + half_ulp) >> shift);
         i_h = 10'(((tt_h << 'ha) - tt_h + half_ulp) >> shift);
@@ -2400,107 +2422,215 @@ module top$pipeline$shade$0$lighting$n2_q(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$lighting$n2_q
-module top$pipeline$shade$0$lighting$p_h$0(d,q,clock);
+module top$pipeline$shade$0$lighting$p_h$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$lighting$p_h$0
-module top$pipeline$shade$0$lighting$p_h$1(d,q,clock);
+module top$pipeline$shade$0$lighting$p_h$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$lighting$p_h$1
-module top$pipeline$shade$0$lighting$p_h$2(d,q,clock);
+module top$pipeline$shade$0$lighting$p_h$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$lighting$p_h$2
-module top$pipeline$shade$0$lighting$p_l$0(d,q,clock);
+module top$pipeline$shade$0$lighting$p_l$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$lighting$p_l$0
-module top$pipeline$shade$0$lighting$p_l$1(d,q,clock);
+module top$pipeline$shade$0$lighting$p_l$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$lighting$p_l$1
-module top$pipeline$shade$0$lighting$p_l$2(d,q,clock);
+module top$pipeline$shade$0$lighting$p_l$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$lighting$p_l$2
 module top$pipeline$shade$0$lighting$pair_h(d,q,clock);
     
@@ -7084,39 +7214,75 @@ module top$pipeline$shade$0$lighting$square$2(address,data);
       default: data = 16'h0;
     endcase
 endmodule // top$pipeline$shade$0$lighting$square$2
-module top$pipeline$shade$0$lighting$t_h(d,q,clock);
+module top$pipeline$shade$0$lighting$t_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$lighting$t_h
-module top$pipeline$shade$0$lighting$t_l(d,q,clock);
+module top$pipeline$shade$0$lighting$t_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$lighting$t_l
 module top$pipeline$shade$0$lighting$third_h(d,q,clock);
     
@@ -7152,39 +7318,75 @@ module top$pipeline$shade$0$lighting$third_l(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$lighting$third_l
-module top$pipeline$shade$0$lighting$u_h(d,q,clock);
+module top$pipeline$shade$0$lighting$u_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$lighting$u_h
-module top$pipeline$shade$0$lighting$u_l(d,q,clock);
+module top$pipeline$shade$0$lighting$u_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$lighting$u_l
 module top$pipeline$shade$0$lit_b(clock,a,b,y);
     
@@ -7200,18 +7402,20 @@ module top$pipeline$shade$0$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$0$lit_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$0$lit_b$t t(
         .d(t$d),
@@ -7222,12 +7426,12 @@ module top$pipeline$shade$0$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -7236,22 +7440,40 @@ module top$pipeline$shade$0$lit_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$lit_b
-module top$pipeline$shade$0$lit_b$p(d,q,clock);
+module top$pipeline$shade$0$lit_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$lit_b$p
 module top$pipeline$shade$0$lit_b$t(d,q,clock);
     
@@ -7284,18 +7506,20 @@ module top$pipeline$shade$0$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$0$lit_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$0$lit_g$t t(
         .d(t$d),
@@ -7306,12 +7530,12 @@ module top$pipeline$shade$0$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -7320,22 +7544,40 @@ module top$pipeline$shade$0$lit_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$lit_g
-module top$pipeline$shade$0$lit_g$p(d,q,clock);
+module top$pipeline$shade$0$lit_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$lit_g$p
 module top$pipeline$shade$0$lit_g$t(d,q,clock);
     
@@ -7368,18 +7610,20 @@ module top$pipeline$shade$0$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$0$lit_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$0$lit_r$t t(
         .d(t$d),
@@ -7390,12 +7634,12 @@ module top$pipeline$shade$0$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -7404,22 +7648,40 @@ module top$pipeline$shade$0$lit_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$lit_r
-module top$pipeline$shade$0$lit_r$p(d,q,clock);
+module top$pipeline$shade$0$lit_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$lit_r$p
 module top$pipeline$shade$0$lit_r$t(d,q,clock);
     
@@ -7726,18 +7988,20 @@ module top$pipeline$shade$0$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$0$mul_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$0$mul_b$t t(
         .d(t$d),
@@ -7748,12 +8012,12 @@ module top$pipeline$shade$0$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -7762,22 +8026,40 @@ module top$pipeline$shade$0$mul_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$mul_b
-module top$pipeline$shade$0$mul_b$p(d,q,clock);
+module top$pipeline$shade$0$mul_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$mul_b$p
 module top$pipeline$shade$0$mul_b$t(d,q,clock);
     
@@ -7810,18 +8092,20 @@ module top$pipeline$shade$0$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$0$mul_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$0$mul_g$t t(
         .d(t$d),
@@ -7832,12 +8116,12 @@ module top$pipeline$shade$0$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -7846,22 +8130,40 @@ module top$pipeline$shade$0$mul_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$mul_g
-module top$pipeline$shade$0$mul_g$p(d,q,clock);
+module top$pipeline$shade$0$mul_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$mul_g$p
 module top$pipeline$shade$0$mul_g$t(d,q,clock);
     
@@ -7894,18 +8196,20 @@ module top$pipeline$shade$0$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$0$mul_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$0$mul_r$t t(
         .d(t$d),
@@ -7916,12 +8220,12 @@ module top$pipeline$shade$0$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -7930,22 +8234,40 @@ module top$pipeline$shade$0$mul_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$0$mul_r
-module top$pipeline$shade$0$mul_r$p(d,q,clock);
+module top$pipeline$shade$0$mul_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$0$mul_r$p
 module top$pipeline$shade$0$mul_r$t(d,q,clock);
     
@@ -11121,24 +11443,30 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
     reg  [15:0] mh_q$2$d;
     wire  [15:0] mh_q$2$q;
     reg  mh_q$2$clock;
-    reg  [31:0] p_l$0$d;
-    wire  [31:0] p_l$0$q;
     reg  p_l$0$clock;
-    reg  [31:0] p_l$1$d;
-    wire  [31:0] p_l$1$q;
+    reg  [15:0] p_l$0$a;
+    reg  [15:0] p_l$0$b;
+    wire  [31:0] p_l$0$p;
     reg  p_l$1$clock;
-    reg  [31:0] p_l$2$d;
-    wire  [31:0] p_l$2$q;
+    reg  [15:0] p_l$1$a;
+    reg  [15:0] p_l$1$b;
+    wire  [31:0] p_l$1$p;
     reg  p_l$2$clock;
-    reg  [31:0] p_h$0$d;
-    wire  [31:0] p_h$0$q;
+    reg  [15:0] p_l$2$a;
+    reg  [15:0] p_l$2$b;
+    wire  [31:0] p_l$2$p;
     reg  p_h$0$clock;
-    reg  [31:0] p_h$1$d;
-    wire  [31:0] p_h$1$q;
+    reg  [15:0] p_h$0$a;
+    reg  [15:0] p_h$0$b;
+    wire  [31:0] p_h$0$p;
     reg  p_h$1$clock;
-    reg  [31:0] p_h$2$d;
-    wire  [31:0] p_h$2$q;
+    reg  [15:0] p_h$1$a;
+    reg  [15:0] p_h$1$b;
+    wire  [31:0] p_h$1$p;
     reg  p_h$2$clock;
+    reg  [15:0] p_h$2$a;
+    reg  [15:0] p_h$2$b;
+    wire  [31:0] p_h$2$p;
     reg  sl_q$0$d;
     wire  sl_q$0$q;
     reg  sl_q$0$clock;
@@ -11187,18 +11515,22 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
     reg  lit_3$d;
     wire  lit_3$q;
     reg  lit_3$clock;
-    reg  [31:0] t_l$d;
-    wire  [31:0] t_l$q;
     reg  t_l$clock;
-    reg  [31:0] t_h$d;
-    wire  [31:0] t_h$q;
+    reg  [15:0] t_l$a;
+    reg  [15:0] t_l$b;
+    wire  [31:0] t_l$p;
     reg  t_h$clock;
-    reg  [31:0] u_l$d;
-    wire  [31:0] u_l$q;
+    reg  [15:0] t_h$a;
+    reg  [15:0] t_h$b;
+    wire  [31:0] t_h$p;
     reg  u_l$clock;
-    reg  [31:0] u_h$d;
-    wire  [31:0] u_h$q;
+    reg  [15:0] u_l$a;
+    reg  [15:0] u_l$b;
+    wire  [31:0] u_l$p;
     reg  u_h$clock;
+    reg  [15:0] u_h$a;
+    reg  [15:0] u_h$b;
+    wire  [31:0] u_h$p;
     reg  lit_4$d;
     wire  lit_4$q;
     reg  lit_4$clock;
@@ -11317,34 +11649,40 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
         .clock(mh_q$2$clock)
     );
     top$pipeline$shade$1$lighting$p_l$0 p_l$0(
-        .d(p_l$0$d),
-        .q(p_l$0$q),
-        .clock(p_l$0$clock)
+        .clock(p_l$0$clock),
+        .a(p_l$0$a),
+        .b(p_l$0$b),
+        .p(p_l$0$p)
     );
     top$pipeline$shade$1$lighting$p_l$1 p_l$1(
-        .d(p_l$1$d),
-        .q(p_l$1$q),
-        .clock(p_l$1$clock)
+        .clock(p_l$1$clock),
+        .a(p_l$1$a),
+        .b(p_l$1$b),
+        .p(p_l$1$p)
     );
     top$pipeline$shade$1$lighting$p_l$2 p_l$2(
-        .d(p_l$2$d),
-        .q(p_l$2$q),
-        .clock(p_l$2$clock)
+        .clock(p_l$2$clock),
+        .a(p_l$2$a),
+        .b(p_l$2$b),
+        .p(p_l$2$p)
     );
     top$pipeline$shade$1$lighting$p_h$0 p_h$0(
-        .d(p_h$0$d),
-        .q(p_h$0$q),
-        .clock(p_h$0$clock)
+        .clock(p_h$0$clock),
+        .a(p_h$0$a),
+        .b(p_h$0$b),
+        .p(p_h$0$p)
     );
     top$pipeline$shade$1$lighting$p_h$1 p_h$1(
-        .d(p_h$1$d),
-        .q(p_h$1$q),
-        .clock(p_h$1$clock)
+        .clock(p_h$1$clock),
+        .a(p_h$1$a),
+        .b(p_h$1$b),
+        .p(p_h$1$p)
     );
     top$pipeline$shade$1$lighting$p_h$2 p_h$2(
-        .d(p_h$2$d),
-        .q(p_h$2$q),
-        .clock(p_h$2$clock)
+        .clock(p_h$2$clock),
+        .a(p_h$2$a),
+        .b(p_h$2$b),
+        .p(p_h$2$p)
     );
     top$pipeline$shade$1$lighting$sl_q$0 sl_q$0(
         .d(sl_q$0$d),
@@ -11427,24 +11765,28 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
         .clock(lit_3$clock)
     );
     top$pipeline$shade$1$lighting$t_l t_l(
-        .d(t_l$d),
-        .q(t_l$q),
-        .clock(t_l$clock)
+        .clock(t_l$clock),
+        .a(t_l$a),
+        .b(t_l$b),
+        .p(t_l$p)
     );
     top$pipeline$shade$1$lighting$t_h t_h(
-        .d(t_h$d),
-        .q(t_h$q),
-        .clock(t_h$clock)
+        .clock(t_h$clock),
+        .a(t_h$a),
+        .b(t_h$b),
+        .p(t_h$p)
     );
     top$pipeline$shade$1$lighting$u_l u_l(
-        .d(u_l$d),
-        .q(u_l$q),
-        .clock(u_l$clock)
+        .clock(u_l$clock),
+        .a(u_l$a),
+        .b(u_l$b),
+        .p(u_l$p)
     );
     top$pipeline$shade$1$lighting$u_h u_h(
-        .d(u_h$d),
-        .q(u_h$q),
-        .clock(u_h$clock)
+        .clock(u_h$clock),
+        .a(u_h$a),
+        .b(u_h$b),
+        .p(u_h$p)
     );
     top$pipeline$shade$1$lighting$lit_4 lit_4(
         .d(lit_4$d),
@@ -11494,10 +11836,6 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
         d_h$clock = clock;
         rn_3$clock = clock;
         lit_3$clock = clock;
-        t_l$clock = clock;
-        t_h$clock = clock;
-        u_l$clock = clock;
-        u_h$clock = clock;
         lit_4$clock = clock;
         idx_l$clock = clock;
         idx_h$clock = clock;
@@ -11515,10 +11853,6 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
         d_h$d = d_h$q;
         rn_3$d = rn_3$q;
         lit_3$d = lit_3$q;
-        t_l$d = t_l$q;
-        t_h$d = t_h$q;
-        u_l$d = u_l$q;
-        u_h$d = u_h$q;
         lit_4$d = lit_4$q;
         idx_l$d = idx_l$q;
         idx_h$d = idx_h$q;
@@ -11571,33 +11905,39 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
         sh_q$0$clock = clock;
         p_l$0$clock = clock;
         p_h$0$clock = clock;
+        p_l$0$a = qm$0;
+        p_h$0$a = qm$0;
         square$0$address = q_mag$0;
         ml_q$0$d = m_l$0;
         mh_q$0$d = m_h$0;
-        p_l$0$d = qm$0 * ml_q$0$q;
-        p_h$0$d = qm$0 * mh_q$0$q;
+        p_l$0$b = ml_q$0$q;
+        p_h$0$b = mh_q$0$q;
         ml_q$1$clock = clock;
         mh_q$1$clock = clock;
         sl_q$1$clock = clock;
         sh_q$1$clock = clock;
         p_l$1$clock = clock;
         p_h$1$clock = clock;
+        p_l$1$a = qm$1;
+        p_h$1$a = qm$1;
         square$1$address = q_mag$1;
         ml_q$1$d = m_l$1;
         mh_q$1$d = m_h$1;
-        p_l$1$d = qm$1 * ml_q$1$q;
-        p_h$1$d = qm$1 * mh_q$1$q;
+        p_l$1$b = ml_q$1$q;
+        p_h$1$b = mh_q$1$q;
         ml_q$2$clock = clock;
         mh_q$2$clock = clock;
         sl_q$2$clock = clock;
         sh_q$2$clock = clock;
         p_l$2$clock = clock;
         p_h$2$clock = clock;
+        p_l$2$a = qm$2;
+        p_h$2$a = qm$2;
         square$2$address = q_mag$2;
         ml_q$2$d = m_l$2;
         mh_q$2$d = m_h$2;
-        p_l$2$d = qm$2 * ml_q$2$q;
-        p_h$2$d = qm$2 * mh_q$2$q;
+        p_l$2$b = ml_q$2$q;
+        p_h$2$b = mh_q$2$q;
         sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
         sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
         sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
@@ -11606,29 +11946,29 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
         sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
         n2 = square$0$data + square$1$data + square$2$data;
         n2_q$d = n2;
-        t_pl$0 = p_l$0$q;
+        t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$q;
+            t_pl$0 = 'h0 - p_l$0$p;
         end
-        t_ph$0 = p_h$0$q;
+        t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$q;
+            t_ph$0 = 'h0 - p_h$0$p;
         end
-        t_pl$1 = p_l$1$q;
+        t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$q;
+            t_pl$1 = 'h0 - p_l$1$p;
         end
-        t_ph$1 = p_h$1$q;
+        t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$q;
+            t_ph$1 = 'h0 - p_h$1$p;
         end
-        t_pl$2 = p_l$2$q;
+        t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$q;
+            t_pl$2 = 'h0 - p_l$2$p;
         end
-        t_ph$2 = p_h$2$q;
+        t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$q;
+            t_ph$2 = 'h0 - p_h$2$p;
         end
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
@@ -11654,20 +11994,24 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
         end
         rn_3$d = rn$q;
         lit_3$d = ~dot_l['h1f] & (dot_l != 'h0);
-        t_l$d = d_l$q[('h0)+:(16)] * rn_3$q;
-        t_h$d = d_h$q[('h0)+:(16)] * rn_3$q;
-        u_l$d = 'h0;
-        u_h$d = 'h0;
-        if (wide_dot) begin
-            u_l$d = d_l$q[('h10)+:(16)] * rn_3$q;
-            u_h$d = d_h$q[('h10)+:(16)] * rn_3$q;
-        end
+        t_l$clock = clock;
+        t_h$clock = clock;
+        u_l$clock = clock;
+        u_h$clock = clock;
+        t_l$a = d_l$q[('h0)+:(16)];
+        t_h$a = d_h$q[('h0)+:(16)];
+        u_l$a = d_l$q[('h10)+:(16)];
+        u_h$a = d_h$q[('h10)+:(16)];
+        t_l$b = rn_3$q;
+        t_h$b = rn_3$q;
+        u_l$b = rn_3$q;
+        u_h$b = rn_3$q;
         lit_4$d = lit_3$q;
-        tt_l = 64'(t_l$q);
-        tt_h = 64'(t_h$q);
+        tt_l = 64'(t_l$p);
+        tt_h = 64'(t_h$p);
         if (wide_dot) begin
-            tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
-            tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
+            tt_l = 64'(t_l$p) + (64'(u_l$p) << 'h10);
+            tt_h = 64'(t_h$p) + (64'(u_h$p) << 'h10);
         end
         i_l = 10'(((tt_l << 'ha) - tt_l + half_ulp) >> shift);
         i_h = 10'(((tt_h << 'ha) - tt_h + half_ulp) >> shift);
@@ -12035,107 +12379,215 @@ module top$pipeline$shade$1$lighting$n2_q(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$lighting$n2_q
-module top$pipeline$shade$1$lighting$p_h$0(d,q,clock);
+module top$pipeline$shade$1$lighting$p_h$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$lighting$p_h$0
-module top$pipeline$shade$1$lighting$p_h$1(d,q,clock);
+module top$pipeline$shade$1$lighting$p_h$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$lighting$p_h$1
-module top$pipeline$shade$1$lighting$p_h$2(d,q,clock);
+module top$pipeline$shade$1$lighting$p_h$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$lighting$p_h$2
-module top$pipeline$shade$1$lighting$p_l$0(d,q,clock);
+module top$pipeline$shade$1$lighting$p_l$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$lighting$p_l$0
-module top$pipeline$shade$1$lighting$p_l$1(d,q,clock);
+module top$pipeline$shade$1$lighting$p_l$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$lighting$p_l$1
-module top$pipeline$shade$1$lighting$p_l$2(d,q,clock);
+module top$pipeline$shade$1$lighting$p_l$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$lighting$p_l$2
 module top$pipeline$shade$1$lighting$pair_h(d,q,clock);
     
@@ -16719,39 +17171,75 @@ module top$pipeline$shade$1$lighting$square$2(address,data);
       default: data = 16'h0;
     endcase
 endmodule // top$pipeline$shade$1$lighting$square$2
-module top$pipeline$shade$1$lighting$t_h(d,q,clock);
+module top$pipeline$shade$1$lighting$t_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$lighting$t_h
-module top$pipeline$shade$1$lighting$t_l(d,q,clock);
+module top$pipeline$shade$1$lighting$t_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$lighting$t_l
 module top$pipeline$shade$1$lighting$third_h(d,q,clock);
     
@@ -16787,39 +17275,75 @@ module top$pipeline$shade$1$lighting$third_l(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$lighting$third_l
-module top$pipeline$shade$1$lighting$u_h(d,q,clock);
+module top$pipeline$shade$1$lighting$u_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$lighting$u_h
-module top$pipeline$shade$1$lighting$u_l(d,q,clock);
+module top$pipeline$shade$1$lighting$u_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$lighting$u_l
 module top$pipeline$shade$1$lit_b(clock,a,b,y);
     
@@ -16835,18 +17359,20 @@ module top$pipeline$shade$1$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$1$lit_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$1$lit_b$t t(
         .d(t$d),
@@ -16857,12 +17383,12 @@ module top$pipeline$shade$1$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -16871,22 +17397,40 @@ module top$pipeline$shade$1$lit_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$lit_b
-module top$pipeline$shade$1$lit_b$p(d,q,clock);
+module top$pipeline$shade$1$lit_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$lit_b$p
 module top$pipeline$shade$1$lit_b$t(d,q,clock);
     
@@ -16919,18 +17463,20 @@ module top$pipeline$shade$1$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$1$lit_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$1$lit_g$t t(
         .d(t$d),
@@ -16941,12 +17487,12 @@ module top$pipeline$shade$1$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -16955,22 +17501,40 @@ module top$pipeline$shade$1$lit_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$lit_g
-module top$pipeline$shade$1$lit_g$p(d,q,clock);
+module top$pipeline$shade$1$lit_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$lit_g$p
 module top$pipeline$shade$1$lit_g$t(d,q,clock);
     
@@ -17003,18 +17567,20 @@ module top$pipeline$shade$1$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$1$lit_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$1$lit_r$t t(
         .d(t$d),
@@ -17025,12 +17591,12 @@ module top$pipeline$shade$1$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -17039,22 +17605,40 @@ module top$pipeline$shade$1$lit_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$lit_r
-module top$pipeline$shade$1$lit_r$p(d,q,clock);
+module top$pipeline$shade$1$lit_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$lit_r$p
 module top$pipeline$shade$1$lit_r$t(d,q,clock);
     
@@ -17361,18 +17945,20 @@ module top$pipeline$shade$1$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$1$mul_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$1$mul_b$t t(
         .d(t$d),
@@ -17383,12 +17969,12 @@ module top$pipeline$shade$1$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -17397,22 +17983,40 @@ module top$pipeline$shade$1$mul_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$mul_b
-module top$pipeline$shade$1$mul_b$p(d,q,clock);
+module top$pipeline$shade$1$mul_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$mul_b$p
 module top$pipeline$shade$1$mul_b$t(d,q,clock);
     
@@ -17445,18 +18049,20 @@ module top$pipeline$shade$1$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$1$mul_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$1$mul_g$t t(
         .d(t$d),
@@ -17467,12 +18073,12 @@ module top$pipeline$shade$1$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -17481,22 +18087,40 @@ module top$pipeline$shade$1$mul_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$mul_g
-module top$pipeline$shade$1$mul_g$p(d,q,clock);
+module top$pipeline$shade$1$mul_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$mul_g$p
 module top$pipeline$shade$1$mul_g$t(d,q,clock);
     
@@ -17529,18 +18153,20 @@ module top$pipeline$shade$1$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$1$mul_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$1$mul_r$t t(
         .d(t$d),
@@ -17551,12 +18177,12 @@ module top$pipeline$shade$1$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -17565,22 +18191,40 @@ module top$pipeline$shade$1$mul_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$1$mul_r
-module top$pipeline$shade$1$mul_r$p(d,q,clock);
+module top$pipeline$shade$1$mul_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$1$mul_r$p
 module top$pipeline$shade$1$mul_r$t(d,q,clock);
     
@@ -20756,24 +21400,30 @@ module top$pipeline$shade$2$lighting(clock,host_write,host_address,host_data,q_n
     reg  [15:0] mh_q$2$d;
     wire  [15:0] mh_q$2$q;
     reg  mh_q$2$clock;
-    reg  [31:0] p_l$0$d;
-    wire  [31:0] p_l$0$q;
     reg  p_l$0$clock;
-    reg  [31:0] p_l$1$d;
-    wire  [31:0] p_l$1$q;
+    reg  [15:0] p_l$0$a;
+    reg  [15:0] p_l$0$b;
+    wire  [31:0] p_l$0$p;
     reg  p_l$1$clock;
-    reg  [31:0] p_l$2$d;
-    wire  [31:0] p_l$2$q;
+    reg  [15:0] p_l$1$a;
+    reg  [15:0] p_l$1$b;
+    wire  [31:0] p_l$1$p;
     reg  p_l$2$clock;
-    reg  [31:0] p_h$0$d;
-    wire  [31:0] p_h$0$q;
+    reg  [15:0] p_l$2$a;
+    reg  [15:0] p_l$2$b;
+    wire  [31:0] p_l$2$p;
     reg  p_h$0$clock;
-    reg  [31:0] p_h$1$d;
-    wire  [31:0] p_h$1$q;
+    reg  [15:0] p_h$0$a;
+    reg  [15:0] p_h$0$b;
+    wire  [31:0] p_h$0$p;
     reg  p_h$1$clock;
-    reg  [31:0] p_h$2$d;
-    wire  [31:0] p_h$2$q;
+    reg  [15:0] p_h$1$a;
+    reg  [15:0] p_h$1$b;
+    wire  [31:0] p_h$1$p;
     reg  p_h$2$clock;
+    reg  [15:0] p_h$2$a;
+    reg  [15:0] p_h$2$b;
+    wire  [31:0] p_h$2$p;
     reg  sl_q$0$d;
     wire  sl_q$0$q;
     reg  sl_q$0$clock;
@@ -20822,18 +21472,22 @@ module top$pipeline$shade$2$lighting(clock,host_write,host_address,host_data,q_n
     reg  lit_3$d;
     wire  lit_3$q;
     reg  lit_3$clock;
-    reg  [31:0] t_l$d;
-    wire  [31:0] t_l$q;
     reg  t_l$clock;
-    reg  [31:0] t_h$d;
-    wire  [31:0] t_h$q;
+    reg  [15:0] t_l$a;
+    reg  [15:0] t_l$b;
+    wire  [31:0] t_l$p;
     reg  t_h$clock;
-    reg  [31:0] u_l$d;
-    wire  [31:0] u_l$q;
+    reg  [15:0] t_h$a;
+    reg  [15:0] t_h$b;
+    wire  [31:0] t_h$p;
     reg  u_l$clock;
-    reg  [31:0] u_h$d;
-    wire  [31:0] u_h$q;
+    reg  [15:0] u_l$a;
+    reg  [15:0] u_l$b;
+    wire  [31:0] u_l$p;
     reg  u_h$clock;
+    reg  [15:0] u_h$a;
+    reg  [15:0] u_h$b;
+    wire  [31:0] u_h$p;
     reg  lit_4$d;
     wire  lit_4$q;
     reg  lit_4$clock;
@@ -20952,34 +21606,40 @@ module top$pipeline$shade$2$lighting(clock,host_write,host_address,host_data,q_n
         .clock(mh_q$2$clock)
     );
     top$pipeline$shade$2$lighting$p_l$0 p_l$0(
-        .d(p_l$0$d),
-        .q(p_l$0$q),
-        .clock(p_l$0$clock)
+        .clock(p_l$0$clock),
+        .a(p_l$0$a),
+        .b(p_l$0$b),
+        .p(p_l$0$p)
     );
     top$pipeline$shade$2$lighting$p_l$1 p_l$1(
-        .d(p_l$1$d),
-        .q(p_l$1$q),
-        .clock(p_l$1$clock)
+        .clock(p_l$1$clock),
+        .a(p_l$1$a),
+        .b(p_l$1$b),
+        .p(p_l$1$p)
     );
     top$pipeline$shade$2$lighting$p_l$2 p_l$2(
-        .d(p_l$2$d),
-        .q(p_l$2$q),
-        .clock(p_l$2$clock)
+        .clock(p_l$2$clock),
+        .a(p_l$2$a),
+        .b(p_l$2$b),
+        .p(p_l$2$p)
     );
     top$pipeline$shade$2$lighting$p_h$0 p_h$0(
-        .d(p_h$0$d),
-        .q(p_h$0$q),
-        .clock(p_h$0$clock)
+        .clock(p_h$0$clock),
+        .a(p_h$0$a),
+        .b(p_h$0$b),
+        .p(p_h$0$p)
     );
     top$pipeline$shade$2$lighting$p_h$1 p_h$1(
-        .d(p_h$1$d),
-        .q(p_h$1$q),
-        .clock(p_h$1$clock)
+        .clock(p_h$1$clock),
+        .a(p_h$1$a),
+        .b(p_h$1$b),
+        .p(p_h$1$p)
     );
     top$pipeline$shade$2$lighting$p_h$2 p_h$2(
-        .d(p_h$2$d),
-        .q(p_h$2$q),
-        .clock(p_h$2$clock)
+        .clock(p_h$2$clock),
+        .a(p_h$2$a),
+        .b(p_h$2$b),
+        .p(p_h$2$p)
     );
     top$pipeline$shade$2$lighting$sl_q$0 sl_q$0(
         .d(sl_q$0$d),
@@ -21062,24 +21722,28 @@ module top$pipeline$shade$2$lighting(clock,host_write,host_address,host_data,q_n
         .clock(lit_3$clock)
     );
     top$pipeline$shade$2$lighting$t_l t_l(
-        .d(t_l$d),
-        .q(t_l$q),
-        .clock(t_l$clock)
+        .clock(t_l$clock),
+        .a(t_l$a),
+        .b(t_l$b),
+        .p(t_l$p)
     );
     top$pipeline$shade$2$lighting$t_h t_h(
-        .d(t_h$d),
-        .q(t_h$q),
-        .clock(t_h$clock)
+        .clock(t_h$clock),
+        .a(t_h$a),
+        .b(t_h$b),
+        .p(t_h$p)
     );
     top$pipeline$shade$2$lighting$u_l u_l(
-        .d(u_l$d),
-        .q(u_l$q),
-        .clock(u_l$clock)
+        .clock(u_l$clock),
+        .a(u_l$a),
+        .b(u_l$b),
+        .p(u_l$p)
     );
     top$pipeline$shade$2$lighting$u_h u_h(
-        .d(u_h$d),
-        .q(u_h$q),
-        .clock(u_h$clock)
+        .clock(u_h$clock),
+        .a(u_h$a),
+        .b(u_h$b),
+        .p(u_h$p)
     );
     top$pipeline$shade$2$lighting$lit_4 lit_4(
         .d(lit_4$d),
@@ -21129,10 +21793,6 @@ module top$pipeline$shade$2$lighting(clock,host_write,host_address,host_data,q_n
         d_h$clock = clock;
         rn_3$clock = clock;
         lit_3$clock = clock;
-        t_l$clock = clock;
-        t_h$clock = clock;
-        u_l$clock = clock;
-        u_h$clock = clock;
         lit_4$clock = clock;
         idx_l$clock = clock;
         idx_h$clock = clock;
@@ -21150,10 +21810,6 @@ module top$pipeline$shade$2$lighting(clock,host_write,host_address,host_data,q_n
         d_h$d = d_h$q;
         rn_3$d = rn_3$q;
         lit_3$d = lit_3$q;
-        t_l$d = t_l$q;
-        t_h$d = t_h$q;
-        u_l$d = u_l$q;
-        u_h$d = u_h$q;
         lit_4$d = lit_4$q;
         idx_l$d = idx_l$q;
         idx_h$d = idx_h$q;
@@ -21206,33 +21862,39 @@ module top$pipeline$shade$2$lighting(clock,host_write,host_address,host_data,q_n
         sh_q$0$clock = clock;
         p_l$0$clock = clock;
         p_h$0$clock = clock;
+        p_l$0$a = qm$0;
+        p_h$0$a = qm$0;
         square$0$address = q_mag$0;
         ml_q$0$d = m_l$0;
         mh_q$0$d = m_h$0;
-        p_l$0$d = qm$0 * ml_q$0$q;
-        p_h$0$d = qm$0 * mh_q$0$q;
+        p_l$0$b = ml_q$0$q;
+        p_h$0$b = mh_q$0$q;
         ml_q$1$clock = clock;
         mh_q$1$clock = clock;
         sl_q$1$clock = clock;
         sh_q$1$clock = clock;
         p_l$1$clock = clock;
         p_h$1$clock = clock;
+        p_l$1$a = qm$1;
+        p_h$1$a = qm$1;
         square$1$address = q_mag$1;
         ml_q$1$d = m_l$1;
         mh_q$1$d = m_h$1;
-        p_l$1$d = qm$1 * ml_q$1$q;
-        p_h$1$d = qm$1 * mh_q$1$q;
+        p_l$1$b = ml_q$1$q;
+        p_h$1$b = mh_q$1$q;
         ml_q$2$clock = clock;
         mh_q$2$clock = clock;
         sl_q$2$clock = clock;
         sh_q$2$clock = clock;
         p_l$2$clock = clock;
         p_h$2$clock = clock;
+        p_l$2$a = qm$2;
+        p_h$2$a = qm$2;
         square$2$address = q_mag$2;
         ml_q$2$d = m_l$2;
         mh_q$2$d = m_h$2;
-        p_l$2$d = qm$2 * ml_q$2$q;
-        p_h$2$d = qm$2 * mh_q$2$q;
+        p_l$2$b = ml_q$2$q;
+        p_h$2$b = mh_q$2$q;
         sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
         sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
         sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
@@ -21241,29 +21903,29 @@ module top$pipeline$shade$2$lighting(clock,host_write,host_address,host_data,q_n
         sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
         n2 = square$0$data + square$1$data + square$2$data;
         n2_q$d = n2;
-        t_pl$0 = p_l$0$q;
+        t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$q;
+            t_pl$0 = 'h0 - p_l$0$p;
         end
-        t_ph$0 = p_h$0$q;
+        t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$q;
+            t_ph$0 = 'h0 - p_h$0$p;
         end
-        t_pl$1 = p_l$1$q;
+        t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$q;
+            t_pl$1 = 'h0 - p_l$1$p;
         end
-        t_ph$1 = p_h$1$q;
+        t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$q;
+            t_ph$1 = 'h0 - p_h$1$p;
         end
-        t_pl$2 = p_l$2$q;
+        t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$q;
+            t_pl$2 = 'h0 - p_l$2$p;
         end
-        t_ph$2 = p_h$2$q;
+        t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$q;
+            t_ph$2 = 'h0 - p_h$2$p;
         end
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
@@ -21289,20 +21951,24 @@ module top$pipeline$shade$2$lighting(clock,host_write,host_address,host_data,q_n
         end
         rn_3$d = rn$q;
         lit_3$d = ~dot_l['h1f] & (dot_l != 'h0);
-        t_l$d = d_l$q[('h0)+:(16)] * rn_3$q;
-        t_h$d = d_h$q[('h0)+:(16)] * rn_3$q;
-        u_l$d = 'h0;
-        u_h$d = 'h0;
-        if (wide_dot) begin
-            u_l$d = d_l$q[('h10)+:(16)] * rn_3$q;
-            u_h$d = d_h$q[('h10)+:(16)] * rn_3$q;
-        end
+        t_l$clock = clock;
+        t_h$clock = clock;
+        u_l$clock = clock;
+        u_h$clock = clock;
+        t_l$a = d_l$q[('h0)+:(16)];
+        t_h$a = d_h$q[('h0)+:(16)];
+        u_l$a = d_l$q[('h10)+:(16)];
+        u_h$a = d_h$q[('h10)+:(16)];
+        t_l$b = rn_3$q;
+        t_h$b = rn_3$q;
+        u_l$b = rn_3$q;
+        u_h$b = rn_3$q;
         lit_4$d = lit_3$q;
-        tt_l = 64'(t_l$q);
-        tt_h = 64'(t_h$q);
+        tt_l = 64'(t_l$p);
+        tt_h = 64'(t_h$p);
         if (wide_dot) begin
-            tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
-            tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
+            tt_l = 64'(t_l$p) + (64'(u_l$p) << 'h10);
+            tt_h = 64'(t_h$p) + (64'(u_h$p) << 'h10);
         end
         i_l = 10'(((tt_l << 'ha) - tt_l + half_ulp) >> shift);
         i_h = 10'(((tt_h << 'ha) - tt_h + half_ulp) >> shift);
@@ -21670,107 +22336,215 @@ module top$pipeline$shade$2$lighting$n2_q(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$2$lighting$n2_q
-module top$pipeline$shade$2$lighting$p_h$0(d,q,clock);
+module top$pipeline$shade$2$lighting$p_h$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$lighting$p_h$0
-module top$pipeline$shade$2$lighting$p_h$1(d,q,clock);
+module top$pipeline$shade$2$lighting$p_h$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$lighting$p_h$1
-module top$pipeline$shade$2$lighting$p_h$2(d,q,clock);
+module top$pipeline$shade$2$lighting$p_h$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$lighting$p_h$2
-module top$pipeline$shade$2$lighting$p_l$0(d,q,clock);
+module top$pipeline$shade$2$lighting$p_l$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$lighting$p_l$0
-module top$pipeline$shade$2$lighting$p_l$1(d,q,clock);
+module top$pipeline$shade$2$lighting$p_l$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$lighting$p_l$1
-module top$pipeline$shade$2$lighting$p_l$2(d,q,clock);
+module top$pipeline$shade$2$lighting$p_l$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$lighting$p_l$2
 module top$pipeline$shade$2$lighting$pair_h(d,q,clock);
     
@@ -26354,39 +27128,75 @@ module top$pipeline$shade$2$lighting$square$2(address,data);
       default: data = 16'h0;
     endcase
 endmodule // top$pipeline$shade$2$lighting$square$2
-module top$pipeline$shade$2$lighting$t_h(d,q,clock);
+module top$pipeline$shade$2$lighting$t_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$lighting$t_h
-module top$pipeline$shade$2$lighting$t_l(d,q,clock);
+module top$pipeline$shade$2$lighting$t_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$lighting$t_l
 module top$pipeline$shade$2$lighting$third_h(d,q,clock);
     
@@ -26422,39 +27232,75 @@ module top$pipeline$shade$2$lighting$third_l(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$2$lighting$third_l
-module top$pipeline$shade$2$lighting$u_h(d,q,clock);
+module top$pipeline$shade$2$lighting$u_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$lighting$u_h
-module top$pipeline$shade$2$lighting$u_l(d,q,clock);
+module top$pipeline$shade$2$lighting$u_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$lighting$u_l
 module top$pipeline$shade$2$lit_b(clock,a,b,y);
     
@@ -26470,18 +27316,20 @@ module top$pipeline$shade$2$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$2$lit_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$2$lit_b$t t(
         .d(t$d),
@@ -26492,12 +27340,12 @@ module top$pipeline$shade$2$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -26506,22 +27354,40 @@ module top$pipeline$shade$2$lit_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$2$lit_b
-module top$pipeline$shade$2$lit_b$p(d,q,clock);
+module top$pipeline$shade$2$lit_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$lit_b$p
 module top$pipeline$shade$2$lit_b$t(d,q,clock);
     
@@ -26554,18 +27420,20 @@ module top$pipeline$shade$2$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$2$lit_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$2$lit_g$t t(
         .d(t$d),
@@ -26576,12 +27444,12 @@ module top$pipeline$shade$2$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -26590,22 +27458,40 @@ module top$pipeline$shade$2$lit_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$2$lit_g
-module top$pipeline$shade$2$lit_g$p(d,q,clock);
+module top$pipeline$shade$2$lit_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$lit_g$p
 module top$pipeline$shade$2$lit_g$t(d,q,clock);
     
@@ -26638,18 +27524,20 @@ module top$pipeline$shade$2$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$2$lit_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$2$lit_r$t t(
         .d(t$d),
@@ -26660,12 +27548,12 @@ module top$pipeline$shade$2$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -26674,22 +27562,40 @@ module top$pipeline$shade$2$lit_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$2$lit_r
-module top$pipeline$shade$2$lit_r$p(d,q,clock);
+module top$pipeline$shade$2$lit_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$lit_r$p
 module top$pipeline$shade$2$lit_r$t(d,q,clock);
     
@@ -26996,18 +27902,20 @@ module top$pipeline$shade$2$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$2$mul_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$2$mul_b$t t(
         .d(t$d),
@@ -27018,12 +27926,12 @@ module top$pipeline$shade$2$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -27032,22 +27940,40 @@ module top$pipeline$shade$2$mul_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$2$mul_b
-module top$pipeline$shade$2$mul_b$p(d,q,clock);
+module top$pipeline$shade$2$mul_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$mul_b$p
 module top$pipeline$shade$2$mul_b$t(d,q,clock);
     
@@ -27080,18 +28006,20 @@ module top$pipeline$shade$2$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$2$mul_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$2$mul_g$t t(
         .d(t$d),
@@ -27102,12 +28030,12 @@ module top$pipeline$shade$2$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -27116,22 +28044,40 @@ module top$pipeline$shade$2$mul_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$2$mul_g
-module top$pipeline$shade$2$mul_g$p(d,q,clock);
+module top$pipeline$shade$2$mul_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$mul_g$p
 module top$pipeline$shade$2$mul_g$t(d,q,clock);
     
@@ -27164,18 +28110,20 @@ module top$pipeline$shade$2$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$2$mul_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$2$mul_r$t t(
         .d(t$d),
@@ -27186,12 +28134,12 @@ module top$pipeline$shade$2$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -27200,22 +28148,40 @@ module top$pipeline$shade$2$mul_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$2$mul_r
-module top$pipeline$shade$2$mul_r$p(d,q,clock);
+module top$pipeline$shade$2$mul_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$2$mul_r$p
 module top$pipeline$shade$2$mul_r$t(d,q,clock);
     
@@ -30391,24 +31357,30 @@ module top$pipeline$shade$3$lighting(clock,host_write,host_address,host_data,q_n
     reg  [15:0] mh_q$2$d;
     wire  [15:0] mh_q$2$q;
     reg  mh_q$2$clock;
-    reg  [31:0] p_l$0$d;
-    wire  [31:0] p_l$0$q;
     reg  p_l$0$clock;
-    reg  [31:0] p_l$1$d;
-    wire  [31:0] p_l$1$q;
+    reg  [15:0] p_l$0$a;
+    reg  [15:0] p_l$0$b;
+    wire  [31:0] p_l$0$p;
     reg  p_l$1$clock;
-    reg  [31:0] p_l$2$d;
-    wire  [31:0] p_l$2$q;
+    reg  [15:0] p_l$1$a;
+    reg  [15:0] p_l$1$b;
+    wire  [31:0] p_l$1$p;
     reg  p_l$2$clock;
-    reg  [31:0] p_h$0$d;
-    wire  [31:0] p_h$0$q;
+    reg  [15:0] p_l$2$a;
+    reg  [15:0] p_l$2$b;
+    wire  [31:0] p_l$2$p;
     reg  p_h$0$clock;
-    reg  [31:0] p_h$1$d;
-    wire  [31:0] p_h$1$q;
+    reg  [15:0] p_h$0$a;
+    reg  [15:0] p_h$0$b;
+    wire  [31:0] p_h$0$p;
     reg  p_h$1$clock;
-    reg  [31:0] p_h$2$d;
-    wire  [31:0] p_h$2$q;
+    reg  [15:0] p_h$1$a;
+    reg  [15:0] p_h$1$b;
+    wire  [31:0] p_h$1$p;
     reg  p_h$2$clock;
+    reg  [15:0] p_h$2$a;
+    reg  [15:0] p_h$2$b;
+    wire  [31:0] p_h$2$p;
     reg  sl_q$0$d;
     wire  sl_q$0$q;
     reg  sl_q$0$clock;
@@ -30457,18 +31429,22 @@ module top$pipeline$shade$3$lighting(clock,host_write,host_address,host_data,q_n
     reg  lit_3$d;
     wire  lit_3$q;
     reg  lit_3$clock;
-    reg  [31:0] t_l$d;
-    wire  [31:0] t_l$q;
     reg  t_l$clock;
-    reg  [31:0] t_h$d;
-    wire  [31:0] t_h$q;
+    reg  [15:0] t_l$a;
+    reg  [15:0] t_l$b;
+    wire  [31:0] t_l$p;
     reg  t_h$clock;
-    reg  [31:0] u_l$d;
-    wire  [31:0] u_l$q;
+    reg  [15:0] t_h$a;
+    reg  [15:0] t_h$b;
+    wire  [31:0] t_h$p;
     reg  u_l$clock;
-    reg  [31:0] u_h$d;
-    wire  [31:0] u_h$q;
+    reg  [15:0] u_l$a;
+    reg  [15:0] u_l$b;
+    wire  [31:0] u_l$p;
     reg  u_h$clock;
+    reg  [15:0] u_h$a;
+    reg  [15:0] u_h$b;
+    wire  [31:0] u_h$p;
     reg  lit_4$d;
     wire  lit_4$q;
     reg  lit_4$clock;
@@ -30587,34 +31563,40 @@ module top$pipeline$shade$3$lighting(clock,host_write,host_address,host_data,q_n
         .clock(mh_q$2$clock)
     );
     top$pipeline$shade$3$lighting$p_l$0 p_l$0(
-        .d(p_l$0$d),
-        .q(p_l$0$q),
-        .clock(p_l$0$clock)
+        .clock(p_l$0$clock),
+        .a(p_l$0$a),
+        .b(p_l$0$b),
+        .p(p_l$0$p)
     );
     top$pipeline$shade$3$lighting$p_l$1 p_l$1(
-        .d(p_l$1$d),
-        .q(p_l$1$q),
-        .clock(p_l$1$clock)
+        .clock(p_l$1$clock),
+        .a(p_l$1$a),
+        .b(p_l$1$b),
+        .p(p_l$1$p)
     );
     top$pipeline$shade$3$lighting$p_l$2 p_l$2(
-        .d(p_l$2$d),
-        .q(p_l$2$q),
-        .clock(p_l$2$clock)
+        .clock(p_l$2$clock),
+        .a(p_l$2$a),
+        .b(p_l$2$b),
+        .p(p_l$2$p)
     );
     top$pipeline$shade$3$lighting$p_h$0 p_h$0(
-        .d(p_h$0$d),
-        .q(p_h$0$q),
-        .clock(p_h$0$clock)
+        .clock(p_h$0$clock),
+        .a(p_h$0$a),
+        .b(p_h$0$b),
+        .p(p_h$0$p)
     );
     top$pipeline$shade$3$lighting$p_h$1 p_h$1(
-        .d(p_h$1$d),
-        .q(p_h$1$q),
-        .clock(p_h$1$clock)
+        .clock(p_h$1$clock),
+        .a(p_h$1$a),
+        .b(p_h$1$b),
+        .p(p_h$1$p)
     );
     top$pipeline$shade$3$lighting$p_h$2 p_h$2(
-        .d(p_h$2$d),
-        .q(p_h$2$q),
-        .clock(p_h$2$clock)
+        .clock(p_h$2$clock),
+        .a(p_h$2$a),
+        .b(p_h$2$b),
+        .p(p_h$2$p)
     );
     top$pipeline$shade$3$lighting$sl_q$0 sl_q$0(
         .d(sl_q$0$d),
@@ -30697,24 +31679,28 @@ module top$pipeline$shade$3$lighting(clock,host_write,host_address,host_data,q_n
         .clock(lit_3$clock)
     );
     top$pipeline$shade$3$lighting$t_l t_l(
-        .d(t_l$d),
-        .q(t_l$q),
-        .clock(t_l$clock)
+        .clock(t_l$clock),
+        .a(t_l$a),
+        .b(t_l$b),
+        .p(t_l$p)
     );
     top$pipeline$shade$3$lighting$t_h t_h(
-        .d(t_h$d),
-        .q(t_h$q),
-        .clock(t_h$clock)
+        .clock(t_h$clock),
+        .a(t_h$a),
+        .b(t_h$b),
+        .p(t_h$p)
     );
     top$pipeline$shade$3$lighting$u_l u_l(
-        .d(u_l$d),
-        .q(u_l$q),
-        .clock(u_l$clock)
+        .clock(u_l$clock),
+        .a(u_l$a),
+        .b(u_l$b),
+        .p(u_l$p)
     );
     top$pipeline$shade$3$lighting$u_h u_h(
-        .d(u_h$d),
-        .q(u_h$q),
-        .clock(u_h$clock)
+        .clock(u_h$clock),
+        .a(u_h$a),
+        .b(u_h$b),
+        .p(u_h$p)
     );
     top$pipeline$shade$3$lighting$lit_4 lit_4(
         .d(lit_4$d),
@@ -30764,10 +31750,6 @@ module top$pipeline$shade$3$lighting(clock,host_write,host_address,host_data,q_n
         d_h$clock = clock;
         rn_3$clock = clock;
         lit_3$clock = clock;
-        t_l$clock = clock;
-        t_h$clock = clock;
-        u_l$clock = clock;
-        u_h$clock = clock;
         lit_4$clock = clock;
         idx_l$clock = clock;
         idx_h$clock = clock;
@@ -30785,10 +31767,6 @@ module top$pipeline$shade$3$lighting(clock,host_write,host_address,host_data,q_n
         d_h$d = d_h$q;
         rn_3$d = rn_3$q;
         lit_3$d = lit_3$q;
-        t_l$d = t_l$q;
-        t_h$d = t_h$q;
-        u_l$d = u_l$q;
-        u_h$d = u_h$q;
         lit_4$d = lit_4$q;
         idx_l$d = idx_l$q;
         idx_h$d = idx_h$q;
@@ -30841,33 +31819,39 @@ module top$pipeline$shade$3$lighting(clock,host_write,host_address,host_data,q_n
         sh_q$0$clock = clock;
         p_l$0$clock = clock;
         p_h$0$clock = clock;
+        p_l$0$a = qm$0;
+        p_h$0$a = qm$0;
         square$0$address = q_mag$0;
         ml_q$0$d = m_l$0;
         mh_q$0$d = m_h$0;
-        p_l$0$d = qm$0 * ml_q$0$q;
-        p_h$0$d = qm$0 * mh_q$0$q;
+        p_l$0$b = ml_q$0$q;
+        p_h$0$b = mh_q$0$q;
         ml_q$1$clock = clock;
         mh_q$1$clock = clock;
         sl_q$1$clock = clock;
         sh_q$1$clock = clock;
         p_l$1$clock = clock;
         p_h$1$clock = clock;
+        p_l$1$a = qm$1;
+        p_h$1$a = qm$1;
         square$1$address = q_mag$1;
         ml_q$1$d = m_l$1;
         mh_q$1$d = m_h$1;
-        p_l$1$d = qm$1 * ml_q$1$q;
-        p_h$1$d = qm$1 * mh_q$1$q;
+        p_l$1$b = ml_q$1$q;
+        p_h$1$b = mh_q$1$q;
         ml_q$2$clock = clock;
         mh_q$2$clock = clock;
         sl_q$2$clock = clock;
         sh_q$2$clock = clock;
         p_l$2$clock = clock;
         p_h$2$clock = clock;
+        p_l$2$a = qm$2;
+        p_h$2$a = qm$2;
         square$2$address = q_mag$2;
         ml_q$2$d = m_l$2;
         mh_q$2$d = m_h$2;
-        p_l$2$d = qm$2 * ml_q$2$q;
-        p_h$2$d = qm$2 * mh_q$2$q;
+        p_l$2$b = ml_q$2$q;
+        p_h$2$b = mh_q$2$q;
         sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
         sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
         sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
@@ -30876,29 +31860,29 @@ module top$pipeline$shade$3$lighting(clock,host_write,host_address,host_data,q_n
         sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
         n2 = square$0$data + square$1$data + square$2$data;
         n2_q$d = n2;
-        t_pl$0 = p_l$0$q;
+        t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$q;
+            t_pl$0 = 'h0 - p_l$0$p;
         end
-        t_ph$0 = p_h$0$q;
+        t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$q;
+            t_ph$0 = 'h0 - p_h$0$p;
         end
-        t_pl$1 = p_l$1$q;
+        t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$q;
+            t_pl$1 = 'h0 - p_l$1$p;
         end
-        t_ph$1 = p_h$1$q;
+        t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$q;
+            t_ph$1 = 'h0 - p_h$1$p;
         end
-        t_pl$2 = p_l$2$q;
+        t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$q;
+            t_pl$2 = 'h0 - p_l$2$p;
         end
-        t_ph$2 = p_h$2$q;
+        t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$q;
+            t_ph$2 = 'h0 - p_h$2$p;
         end
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
@@ -30924,20 +31908,24 @@ module top$pipeline$shade$3$lighting(clock,host_write,host_address,host_data,q_n
         end
         rn_3$d = rn$q;
         lit_3$d = ~dot_l['h1f] & (dot_l != 'h0);
-        t_l$d = d_l$q[('h0)+:(16)] * rn_3$q;
-        t_h$d = d_h$q[('h0)+:(16)] * rn_3$q;
-        u_l$d = 'h0;
-        u_h$d = 'h0;
-        if (wide_dot) begin
-            u_l$d = d_l$q[('h10)+:(16)] * rn_3$q;
-            u_h$d = d_h$q[('h10)+:(16)] * rn_3$q;
-        end
+        t_l$clock = clock;
+        t_h$clock = clock;
+        u_l$clock = clock;
+        u_h$clock = clock;
+        t_l$a = d_l$q[('h0)+:(16)];
+        t_h$a = d_h$q[('h0)+:(16)];
+        u_l$a = d_l$q[('h10)+:(16)];
+        u_h$a = d_h$q[('h10)+:(16)];
+        t_l$b = rn_3$q;
+        t_h$b = rn_3$q;
+        u_l$b = rn_3$q;
+        u_h$b = rn_3$q;
         lit_4$d = lit_3$q;
-        tt_l = 64'(t_l$q);
-        tt_h = 64'(t_h$q);
+        tt_l = 64'(t_l$p);
+        tt_h = 64'(t_h$p);
         if (wide_dot) begin
-            tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
-            tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
+            tt_l = 64'(t_l$p) + (64'(u_l$p) << 'h10);
+            tt_h = 64'(t_h$p) + (64'(u_h$p) << 'h10);
         end
         i_l = 10'(((tt_l << 'ha) - tt_l + half_ulp) >> shift);
         i_h = 10'(((tt_h << 'ha) - tt_h + half_ulp) >> shift);
@@ -31305,107 +32293,215 @@ module top$pipeline$shade$3$lighting$n2_q(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$3$lighting$n2_q
-module top$pipeline$shade$3$lighting$p_h$0(d,q,clock);
+module top$pipeline$shade$3$lighting$p_h$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$lighting$p_h$0
-module top$pipeline$shade$3$lighting$p_h$1(d,q,clock);
+module top$pipeline$shade$3$lighting$p_h$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$lighting$p_h$1
-module top$pipeline$shade$3$lighting$p_h$2(d,q,clock);
+module top$pipeline$shade$3$lighting$p_h$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$lighting$p_h$2
-module top$pipeline$shade$3$lighting$p_l$0(d,q,clock);
+module top$pipeline$shade$3$lighting$p_l$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$lighting$p_l$0
-module top$pipeline$shade$3$lighting$p_l$1(d,q,clock);
+module top$pipeline$shade$3$lighting$p_l$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$lighting$p_l$1
-module top$pipeline$shade$3$lighting$p_l$2(d,q,clock);
+module top$pipeline$shade$3$lighting$p_l$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$lighting$p_l$2
 module top$pipeline$shade$3$lighting$pair_h(d,q,clock);
     
@@ -35989,39 +37085,75 @@ module top$pipeline$shade$3$lighting$square$2(address,data);
       default: data = 16'h0;
     endcase
 endmodule // top$pipeline$shade$3$lighting$square$2
-module top$pipeline$shade$3$lighting$t_h(d,q,clock);
+module top$pipeline$shade$3$lighting$t_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$lighting$t_h
-module top$pipeline$shade$3$lighting$t_l(d,q,clock);
+module top$pipeline$shade$3$lighting$t_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$lighting$t_l
 module top$pipeline$shade$3$lighting$third_h(d,q,clock);
     
@@ -36057,39 +37189,75 @@ module top$pipeline$shade$3$lighting$third_l(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$3$lighting$third_l
-module top$pipeline$shade$3$lighting$u_h(d,q,clock);
+module top$pipeline$shade$3$lighting$u_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$lighting$u_h
-module top$pipeline$shade$3$lighting$u_l(d,q,clock);
+module top$pipeline$shade$3$lighting$u_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$lighting$u_l
 module top$pipeline$shade$3$lit_b(clock,a,b,y);
     
@@ -36105,18 +37273,20 @@ module top$pipeline$shade$3$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$3$lit_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$3$lit_b$t t(
         .d(t$d),
@@ -36127,12 +37297,12 @@ module top$pipeline$shade$3$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -36141,22 +37311,40 @@ module top$pipeline$shade$3$lit_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$3$lit_b
-module top$pipeline$shade$3$lit_b$p(d,q,clock);
+module top$pipeline$shade$3$lit_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$lit_b$p
 module top$pipeline$shade$3$lit_b$t(d,q,clock);
     
@@ -36189,18 +37377,20 @@ module top$pipeline$shade$3$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$3$lit_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$3$lit_g$t t(
         .d(t$d),
@@ -36211,12 +37401,12 @@ module top$pipeline$shade$3$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -36225,22 +37415,40 @@ module top$pipeline$shade$3$lit_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$3$lit_g
-module top$pipeline$shade$3$lit_g$p(d,q,clock);
+module top$pipeline$shade$3$lit_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$lit_g$p
 module top$pipeline$shade$3$lit_g$t(d,q,clock);
     
@@ -36273,18 +37481,20 @@ module top$pipeline$shade$3$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$3$lit_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$3$lit_r$t t(
         .d(t$d),
@@ -36295,12 +37505,12 @@ module top$pipeline$shade$3$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -36309,22 +37519,40 @@ module top$pipeline$shade$3$lit_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$3$lit_r
-module top$pipeline$shade$3$lit_r$p(d,q,clock);
+module top$pipeline$shade$3$lit_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$lit_r$p
 module top$pipeline$shade$3$lit_r$t(d,q,clock);
     
@@ -36631,18 +37859,20 @@ module top$pipeline$shade$3$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$3$mul_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$3$mul_b$t t(
         .d(t$d),
@@ -36653,12 +37883,12 @@ module top$pipeline$shade$3$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -36667,22 +37897,40 @@ module top$pipeline$shade$3$mul_b(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$3$mul_b
-module top$pipeline$shade$3$mul_b$p(d,q,clock);
+module top$pipeline$shade$3$mul_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$mul_b$p
 module top$pipeline$shade$3$mul_b$t(d,q,clock);
     
@@ -36715,18 +37963,20 @@ module top$pipeline$shade$3$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$3$mul_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$3$mul_g$t t(
         .d(t$d),
@@ -36737,12 +37987,12 @@ module top$pipeline$shade$3$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -36751,22 +38001,40 @@ module top$pipeline$shade$3$mul_g(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$3$mul_g
-module top$pipeline$shade$3$mul_g$p(d,q,clock);
+module top$pipeline$shade$3$mul_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$mul_g$p
 module top$pipeline$shade$3$mul_g$t(d,q,clock);
     
@@ -36799,18 +38067,20 @@ module top$pipeline$shade$3$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$pipeline$shade$3$mul_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$pipeline$shade$3$mul_r$t t(
         .d(t$d),
@@ -36821,12 +38091,12 @@ module top$pipeline$shade$3$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -36835,22 +38105,40 @@ module top$pipeline$shade$3$mul_r(clock,a,b,y);
     end
     
 endmodule // top$pipeline$shade$3$mul_r
-module top$pipeline$shade$3$mul_r$p(d,q,clock);
+module top$pipeline$shade$3$mul_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$pipeline$shade$3$mul_r$p
 module top$pipeline$shade$3$mul_r$t(d,q,clock);
     

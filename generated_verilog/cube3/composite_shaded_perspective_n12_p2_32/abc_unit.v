@@ -1562,6 +1562,10 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -1583,6 +1587,7 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -1605,6 +1610,12 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$0$back_bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -1664,16 +1675,23 @@ module top$pipeline$abc$estimators$0$back_bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -1731,6 +1749,41 @@ module top$pipeline$abc$estimators$0$back_bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$back_bottom$diff_q
+module top$pipeline$abc$estimators$0$back_bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$0$back_bottom$narrow
 module top$pipeline$abc$estimators$0$back_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -1844,6 +1897,10 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -1865,6 +1922,7 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -1887,6 +1945,12 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$0$back_top$up_q2 up_q2(
         .d(up_q2$d),
@@ -1946,16 +2010,23 @@ module top$pipeline$abc$estimators$0$back_top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -2013,6 +2084,41 @@ module top$pipeline$abc$estimators$0$back_top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$back_top$diff_q
+module top$pipeline$abc$estimators$0$back_top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$0$back_top$narrow
 module top$pipeline$abc$estimators$0$back_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -2126,6 +2232,10 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -2147,6 +2257,7 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -2169,6 +2280,12 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$back_y$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$0$back_y$up_q2 up_q2(
         .d(up_q2$d),
@@ -2228,16 +2345,23 @@ module top$pipeline$abc$estimators$0$back_y(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -2295,6 +2419,41 @@ module top$pipeline$abc$estimators$0$back_y$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$back_y$diff_q
+module top$pipeline$abc$estimators$0$back_y$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$0$back_y$narrow
 module top$pipeline$abc$estimators$0$back_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -2867,6 +3026,10 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -2888,6 +3051,7 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -2910,6 +3074,12 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$0$front_bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -2969,16 +3139,23 @@ module top$pipeline$abc$estimators$0$front_bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -3036,6 +3213,41 @@ module top$pipeline$abc$estimators$0$front_bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$front_bottom$diff_q
+module top$pipeline$abc$estimators$0$front_bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$0$front_bottom$narrow
 module top$pipeline$abc$estimators$0$front_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -3149,6 +3361,10 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -3170,6 +3386,7 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -3192,6 +3409,12 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$0$front_top$up_q2 up_q2(
         .d(up_q2$d),
@@ -3251,16 +3474,23 @@ module top$pipeline$abc$estimators$0$front_top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -3318,6 +3548,41 @@ module top$pipeline$abc$estimators$0$front_top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$front_top$diff_q
+module top$pipeline$abc$estimators$0$front_top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$0$front_top$narrow
 module top$pipeline$abc$estimators$0$front_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -3431,6 +3696,10 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -3452,6 +3721,7 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -3474,6 +3744,12 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$0$front_y$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$0$front_y$up_q2 up_q2(
         .d(up_q2$d),
@@ -3533,16 +3809,23 @@ module top$pipeline$abc$estimators$0$front_y(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -3600,6 +3883,41 @@ module top$pipeline$abc$estimators$0$front_y$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$0$front_y$diff_q
+module top$pipeline$abc$estimators$0$front_y$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$0$front_y$narrow
 module top$pipeline$abc$estimators$0$front_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -5348,6 +5666,10 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -5369,6 +5691,7 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -5391,6 +5714,12 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$1$back_bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -5450,16 +5779,23 @@ module top$pipeline$abc$estimators$1$back_bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -5517,6 +5853,41 @@ module top$pipeline$abc$estimators$1$back_bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$back_bottom$diff_q
+module top$pipeline$abc$estimators$1$back_bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$1$back_bottom$narrow
 module top$pipeline$abc$estimators$1$back_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -5630,6 +6001,10 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -5651,6 +6026,7 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -5673,6 +6049,12 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$1$back_top$up_q2 up_q2(
         .d(up_q2$d),
@@ -5732,16 +6114,23 @@ module top$pipeline$abc$estimators$1$back_top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -5799,6 +6188,41 @@ module top$pipeline$abc$estimators$1$back_top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$back_top$diff_q
+module top$pipeline$abc$estimators$1$back_top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$1$back_top$narrow
 module top$pipeline$abc$estimators$1$back_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -5912,6 +6336,10 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -5933,6 +6361,7 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -5955,6 +6384,12 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$back_y$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$1$back_y$up_q2 up_q2(
         .d(up_q2$d),
@@ -6014,16 +6449,23 @@ module top$pipeline$abc$estimators$1$back_y(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -6081,6 +6523,41 @@ module top$pipeline$abc$estimators$1$back_y$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$back_y$diff_q
+module top$pipeline$abc$estimators$1$back_y$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$1$back_y$narrow
 module top$pipeline$abc$estimators$1$back_y$prod_q(d,q,clock);
     
     // Module arguments
@@ -6653,6 +7130,10 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -6674,6 +7155,7 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -6696,6 +7178,12 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$1$front_bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -6755,16 +7243,23 @@ module top$pipeline$abc$estimators$1$front_bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -6822,6 +7317,41 @@ module top$pipeline$abc$estimators$1$front_bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$front_bottom$diff_q
+module top$pipeline$abc$estimators$1$front_bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$1$front_bottom$narrow
 module top$pipeline$abc$estimators$1$front_bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -6935,6 +7465,10 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -6956,6 +7490,7 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -6978,6 +7513,12 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$1$front_top$up_q2 up_q2(
         .d(up_q2$d),
@@ -7037,16 +7578,23 @@ module top$pipeline$abc$estimators$1$front_top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -7104,6 +7652,41 @@ module top$pipeline$abc$estimators$1$front_top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$front_top$diff_q
+module top$pipeline$abc$estimators$1$front_top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$1$front_top$narrow
 module top$pipeline$abc$estimators$1$front_top$prod_q(d,q,clock);
     
     // Module arguments
@@ -7217,6 +7800,10 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -7238,6 +7825,7 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -7260,6 +7848,12 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$abc$estimators$1$front_y$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$abc$estimators$1$front_y$up_q2 up_q2(
         .d(up_q2$d),
@@ -7319,16 +7913,23 @@ module top$pipeline$abc$estimators$1$front_y(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -7386,6 +7987,41 @@ module top$pipeline$abc$estimators$1$front_y$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$abc$estimators$1$front_y$diff_q
+module top$pipeline$abc$estimators$1$front_y$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$abc$estimators$1$front_y$narrow
 module top$pipeline$abc$estimators$1$front_y$prod_q(d,q,clock);
     
     // Module arguments

@@ -407,6 +407,10 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -428,6 +432,7 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -450,6 +455,12 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$0$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -509,16 +520,23 @@ module top$pipeline$lanes$units$0$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -576,6 +594,41 @@ module top$pipeline$lanes$units$0$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$bottom$diff_q
+module top$pipeline$lanes$units$0$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$0$bottom$narrow
 module top$pipeline$lanes$units$0$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -774,6 +827,10 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -795,6 +852,7 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -817,6 +875,12 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$0$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -876,16 +940,23 @@ module top$pipeline$lanes$units$0$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -943,6 +1014,41 @@ module top$pipeline$lanes$units$0$top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$top$diff_q
+module top$pipeline$lanes$units$0$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$0$top$narrow
 module top$pipeline$lanes$units$0$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -1056,6 +1162,10 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -1077,6 +1187,7 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -1099,6 +1210,12 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$0$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -1158,16 +1275,23 @@ module top$pipeline$lanes$units$0$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -1225,6 +1349,41 @@ module top$pipeline$lanes$units$0$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$vertical$diff_q
+module top$pipeline$lanes$units$0$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$0$vertical$narrow
 module top$pipeline$lanes$units$0$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -1474,6 +1633,10 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -1495,6 +1658,7 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -1517,6 +1681,12 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$0$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$0$z$0$up_q2 up_q2(
         .d(up_q2$d),
@@ -1576,16 +1746,23 @@ module top$pipeline$lanes$units$0$z$0(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -1643,6 +1820,41 @@ module top$pipeline$lanes$units$0$z$0$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$0$diff_q
+module top$pipeline$lanes$units$0$z$0$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$0$z$0$narrow
 module top$pipeline$lanes$units$0$z$0$prod_q(d,q,clock);
     
     // Module arguments
@@ -1756,6 +1968,10 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -1777,6 +1993,7 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -1799,6 +2016,12 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$1$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$0$z$1$up_q2 up_q2(
         .d(up_q2$d),
@@ -1858,16 +2081,23 @@ module top$pipeline$lanes$units$0$z$1(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -1925,6 +2155,41 @@ module top$pipeline$lanes$units$0$z$1$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$1$diff_q
+module top$pipeline$lanes$units$0$z$1$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$0$z$1$narrow
 module top$pipeline$lanes$units$0$z$1$prod_q(d,q,clock);
     
     // Module arguments
@@ -2038,6 +2303,10 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -2059,6 +2328,7 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -2081,6 +2351,12 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$2$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$0$z$2$up_q2 up_q2(
         .d(up_q2$d),
@@ -2140,16 +2416,23 @@ module top$pipeline$lanes$units$0$z$2(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -2207,6 +2490,41 @@ module top$pipeline$lanes$units$0$z$2$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$2$diff_q
+module top$pipeline$lanes$units$0$z$2$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$0$z$2$narrow
 module top$pipeline$lanes$units$0$z$2$prod_q(d,q,clock);
     
     // Module arguments
@@ -2320,6 +2638,10 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -2341,6 +2663,7 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -2363,6 +2686,12 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$0$z$3$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$0$z$3$up_q2 up_q2(
         .d(up_q2$d),
@@ -2422,16 +2751,23 @@ module top$pipeline$lanes$units$0$z$3(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -2489,6 +2825,41 @@ module top$pipeline$lanes$units$0$z$3$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$0$z$3$diff_q
+module top$pipeline$lanes$units$0$z$3$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$0$z$3$narrow
 module top$pipeline$lanes$units$0$z$3$prod_q(d,q,clock);
     
     // Module arguments
@@ -2983,6 +3354,10 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -3004,6 +3379,7 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -3026,6 +3402,12 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$1$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -3085,16 +3467,23 @@ module top$pipeline$lanes$units$1$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -3152,6 +3541,41 @@ module top$pipeline$lanes$units$1$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$bottom$diff_q
+module top$pipeline$lanes$units$1$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$1$bottom$narrow
 module top$pipeline$lanes$units$1$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -3350,6 +3774,10 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -3371,6 +3799,7 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -3393,6 +3822,12 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$1$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -3452,16 +3887,23 @@ module top$pipeline$lanes$units$1$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -3519,6 +3961,41 @@ module top$pipeline$lanes$units$1$top$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$top$diff_q
+module top$pipeline$lanes$units$1$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$1$top$narrow
 module top$pipeline$lanes$units$1$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -3632,6 +4109,10 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -3653,6 +4134,7 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -3675,6 +4157,12 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$1$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -3734,16 +4222,23 @@ module top$pipeline$lanes$units$1$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -3801,6 +4296,41 @@ module top$pipeline$lanes$units$1$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$vertical$diff_q
+module top$pipeline$lanes$units$1$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$1$vertical$narrow
 module top$pipeline$lanes$units$1$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -4050,6 +4580,10 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -4071,6 +4605,7 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -4093,6 +4628,12 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$0$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$1$z$0$up_q2 up_q2(
         .d(up_q2$d),
@@ -4152,16 +4693,23 @@ module top$pipeline$lanes$units$1$z$0(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -4219,6 +4767,41 @@ module top$pipeline$lanes$units$1$z$0$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$0$diff_q
+module top$pipeline$lanes$units$1$z$0$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$1$z$0$narrow
 module top$pipeline$lanes$units$1$z$0$prod_q(d,q,clock);
     
     // Module arguments
@@ -4332,6 +4915,10 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -4353,6 +4940,7 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -4375,6 +4963,12 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$1$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$1$z$1$up_q2 up_q2(
         .d(up_q2$d),
@@ -4434,16 +5028,23 @@ module top$pipeline$lanes$units$1$z$1(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -4501,6 +5102,41 @@ module top$pipeline$lanes$units$1$z$1$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$1$diff_q
+module top$pipeline$lanes$units$1$z$1$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$1$z$1$narrow
 module top$pipeline$lanes$units$1$z$1$prod_q(d,q,clock);
     
     // Module arguments
@@ -4614,6 +5250,10 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -4635,6 +5275,7 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -4657,6 +5298,12 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$2$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$1$z$2$up_q2 up_q2(
         .d(up_q2$d),
@@ -4716,16 +5363,23 @@ module top$pipeline$lanes$units$1$z$2(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -4783,6 +5437,41 @@ module top$pipeline$lanes$units$1$z$2$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$2$diff_q
+module top$pipeline$lanes$units$1$z$2$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$1$z$2$narrow
 module top$pipeline$lanes$units$1$z$2$prod_q(d,q,clock);
     
     // Module arguments
@@ -4896,6 +5585,10 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -4917,6 +5610,7 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -4939,6 +5633,12 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$pipeline$lanes$units$1$z$3$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$pipeline$lanes$units$1$z$3$up_q2 up_q2(
         .d(up_q2$d),
@@ -4998,16 +5698,23 @@ module top$pipeline$lanes$units$1$z$3(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -5065,6 +5772,41 @@ module top$pipeline$lanes$units$1$z$3$diff_q(d,q,clock);
     end
           
 endmodule // top$pipeline$lanes$units$1$z$3$diff_q
+module top$pipeline$lanes$units$1$z$3$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$pipeline$lanes$units$1$z$3$narrow
 module top$pipeline$lanes$units$1$z$3$prod_q(d,q,clock);
     
     // Module arguments
