@@ -48,17 +48,20 @@ pub struct ControlDelay {
     /// (16 bits a coordinate in every build would carry 61 registers of 16
     /// bits a lane, whatever the volume).
     pub coord_mask: Signal<In, Bits<16>>,
-    /// At the gather (T): the voxel's x (for the taps), SR, dx and dy.
+    /// At the gather (T): the voxel's x (for the taps), |dx| and |dy| (the
+    /// bilinear weights).
     pub x_t: Signal<Out, Bits<16>>,
-    pub sr_t: Signal<Out, Bit>,
-    pub dx_neg_t: Signal<Out, Bit>,
     pub dx_mag_t: Signal<Out, Bits<16>>,
-    pub dy_neg_t: Signal<Out, Bit>,
     pub dy_mag_t: Signal<Out, Bits<16>>,
-    /// At T: the x (y) neighbour by the sign of dx (dy) lies outside the
-    /// slice, compared a clock ahead and registered for the 2x2 selection.
-    pub x_out_t: Signal<Out, Bit>,
-    pub y_out_t: Signal<Out, Bit>,
+    /// At T, for the 2x2 selection, one copy for each bilinear channel
+    /// (bits 0 to 6, as `Select2x2` reads them): SR, the signs of dx and dy, whether they
+    /// are non-zero, and whether the x (y) neighbour by the sign of dx
+    /// (dy) lies outside the slice, each tested a clock ahead. A channel's
+    /// own copy drives only that channel's multiplexers, where one register
+    /// drove all four channels' across the lane (the shaded 256³ build's
+    /// path: |dy| → its zero test → a channel's cell register, 7.53 ns of
+    /// routing).
+    pub sel_t: [Signal<Out, Bits<7>>; 4],
     /// At T+L+4, beside the composited value: a beat, one that is not
     /// padding, and the base-plane pixel on ER.
     pub res_beat: Signal<Out, Bit>,
@@ -71,16 +74,23 @@ pub struct ControlDelay {
     /// sweep), the lane's own copies.
     nx_last: LaneCopy<Bits<16>>,
     ny_last: LaneCopy<Bits<16>>,
-    x_out_q: DFF<Bit>,
-    y_out_q: DFF<Bit>,
+    /// The selection's flags at T-1, and their copies at T.
+    x_out: Signal<Local, Bit>,
+    y_out: Signal<Local, Bit>,
+    dx_nz: Signal<Local, Bit>,
+    dy_nz: Signal<Local, Bit>,
+    sel: Signal<Local, Bits<7>>,
+    sel_q: [LaneCopy<Bits<7>>; 4],
     // Control to the gather.
     x_q: [DFF<Bits<16>>; GATHER],
     /// y goes only as far as the slice-edge test a clock before T.
     y_q: [DFF<Bits<16>>; 9],
-    sr_q: [DFF<Bit>; GATHER],
-    dxn_q: [DFF<Bit>; GATHER],
+    /// SR and the signs go only as far as the selection's flags, a clock
+    /// before T.
+    sr_q: [DFF<Bit>; 9],
+    dxn_q: [DFF<Bit>; 9],
     dxm_q: [DFF<Bits<16>>; GATHER],
-    dyn_q: [DFF<Bit>; GATHER],
+    dyn_q: [DFF<Bit>; 9],
     dym_q: [DFF<Bits<16>>; GATHER],
     // Control to the result.
     v_q: [DFF<Bit>; RESULT],
@@ -94,13 +104,10 @@ pub struct ControlDelay {
 impl Logic for ControlDelay {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, nx_last, ny_last, x_out_q, y_out_q);
+        dff_setup!(self, clock, nx_last, ny_last);
         for i in 0..10 {
             self.x_q[i].clock.next = self.clock.val();
-            self.sr_q[i].clock.next = self.clock.val();
-            self.dxn_q[i].clock.next = self.clock.val();
             self.dxm_q[i].clock.next = self.clock.val();
-            self.dyn_q[i].clock.next = self.clock.val();
             self.dym_q[i].clock.next = self.clock.val();
         }
         for i in 0..21 {
@@ -121,45 +128,59 @@ impl Logic for ControlDelay {
         self.dym_q[0].d.next = self.dy_mag.val();
         for i in 1..10 {
             self.x_q[i].d.next = self.x_q[i - 1].q.val();
-            self.sr_q[i].d.next = self.sr_q[i - 1].q.val();
-            self.dxn_q[i].d.next = self.dxn_q[i - 1].q.val();
             self.dxm_q[i].d.next = self.dxm_q[i - 1].q.val();
-            self.dyn_q[i].d.next = self.dyn_q[i - 1].q.val();
             self.dym_q[i].d.next = self.dym_q[i - 1].q.val();
         }
         for i in 0..9 {
             self.y_q[i].clock.next = self.clock.val();
+            self.sr_q[i].clock.next = self.clock.val();
+            self.dxn_q[i].clock.next = self.clock.val();
+            self.dyn_q[i].clock.next = self.clock.val();
         }
         for i in 1..9 {
             self.y_q[i].d.next = self.y_q[i - 1].q.val();
+            self.sr_q[i].d.next = self.sr_q[i - 1].q.val();
+            self.dxn_q[i].d.next = self.dxn_q[i - 1].q.val();
+            self.dyn_q[i].d.next = self.dyn_q[i - 1].q.val();
         }
         self.x_t.next = self.x_q[9].q.val();
-        self.sr_t.next = self.sr_q[9].q.val();
-        self.dx_neg_t.next = self.dxn_q[9].q.val();
         self.dx_mag_t.next = self.dxm_q[9].q.val();
-        self.dy_neg_t.next = self.dyn_q[9].q.val();
         self.dy_mag_t.next = self.dym_q[9].q.val();
         // The slice-edge tests of the 2x2 selection, from the control at T-1.
         self.nx_last.d.next = self.dims.val().get_bits::<16>(0) - 1;
         self.ny_last.d.next = self.dims.val().get_bits::<16>(16) - 1;
-        self.x_out_q.d.next = false;
+        self.x_out.next = false;
         if self.dxm_q[8].q.val() != 0 {
             if self.dxn_q[8].q.val() {
-                self.x_out_q.d.next = self.x_q[8].q.val() == self.nx_last.q.val();
+                self.x_out.next = self.x_q[8].q.val() == self.nx_last.q.val();
             } else {
-                self.x_out_q.d.next = self.x_q[8].q.val() == 0;
+                self.x_out.next = self.x_q[8].q.val() == 0;
             }
         }
-        self.y_out_q.d.next = false;
+        self.y_out.next = false;
         if self.dym_q[8].q.val() != 0 {
             if self.dyn_q[8].q.val() {
-                self.y_out_q.d.next = self.y_q[8].q.val() == self.ny_last.q.val();
+                self.y_out.next = self.y_q[8].q.val() == self.ny_last.q.val();
             } else {
-                self.y_out_q.d.next = self.y_q[8].q.val() == 0;
+                self.y_out.next = self.y_q[8].q.val() == 0;
             }
         }
-        self.x_out_t.next = self.x_out_q.q.val();
-        self.y_out_t.next = self.y_out_q.q.val();
+        // The selection's flags (`Select2x2`'s bits 0 to 6), from the
+        // control at T-1, into each channel's copy.
+        self.dx_nz.next = self.dxm_q[8].q.val() != 0;
+        self.dy_nz.next = self.dym_q[8].q.val() != 0;
+        self.sel.next = bit_cast::<7, 1>(self.sr_q[8].q.val().into())
+            | (bit_cast::<7, 1>(self.dxn_q[8].q.val().into()) << 1)
+            | (bit_cast::<7, 1>(self.dx_nz.val().into()) << 2)
+            | (bit_cast::<7, 1>(self.dyn_q[8].q.val().into()) << 3)
+            | (bit_cast::<7, 1>(self.dy_nz.val().into()) << 4)
+            | (bit_cast::<7, 1>(self.x_out.val().into()) << 5)
+            | (bit_cast::<7, 1>(self.y_out.val().into()) << 6);
+        for ch in 0..4 {
+            self.sel_q[ch].clock.next = self.clock.val();
+            self.sel_q[ch].d.next = self.sel.val();
+            self.sel_t[ch].next = self.sel_q[ch].q.val();
+        }
         // The input -> the result.
         self.v_q[0].d.next = self.valid.val();
         self.er_q[0].d.next = self.er.val();

@@ -302,13 +302,9 @@ impl<const H: usize> Logic for PipeLane<H> {
             self.cells.a[c].next = self.taps.a[c].val();
         }
         self.cells.order.next = self.order.val();
-        self.cells.x_out.next = self.ctl.x_out_t.val();
-        self.cells.y_out.next = self.ctl.y_out_t.val();
-        self.cells.sr.next = self.ctl.sr_t.val();
-        self.cells.dx_neg.next = self.ctl.dx_neg_t.val();
-        self.cells.dx_mag.next = self.ctl.dx_mag_t.val();
-        self.cells.dy_neg.next = self.ctl.dy_neg_t.val();
-        self.cells.dy_mag.next = self.ctl.dy_mag_t.val();
+        for ch in 0..4 {
+            self.cells.sel[ch].next = self.ctl.sel_t[ch].val();
+        }
         // Bilinear unit (T..T+L).
         self.bilinear.clock.next = self.clock.val();
         for i in 0..4 {

@@ -151,10 +151,10 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
         // The neighbour that the sign of dx selects, swapped for the other.
         fault(
             "wrong 2x2 selection",
-            "x neighbour taken on the wrong side of the ray",
+            "x neighbour taken on the wrong side of the ray (channel 0)",
             "top$lanes$0$cells",
-            &format!("w10 = a${x_tap};"),
-            &format!("w10 = a${};", 3 - x_tap),
+            &format!("w10$0 = a${x_tap};"),
+            &format!("w10$0 = a${};", 3 - x_tap),
         ),
         fault(
             "gradient sign",

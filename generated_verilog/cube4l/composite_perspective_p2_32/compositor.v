@@ -391,18 +391,20 @@ module top$lanes$0$compositor$ch_a$mul(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$compositor$ch_a$mul$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$compositor$ch_a$mul$t t(
         .d(t$d),
@@ -413,12 +415,12 @@ module top$lanes$0$compositor$ch_a$mul(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -427,22 +429,40 @@ module top$lanes$0$compositor$ch_a$mul(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$compositor$ch_a$mul
-module top$lanes$0$compositor$ch_a$mul$p(d,q,clock);
+module top$lanes$0$compositor$ch_a$mul$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$compositor$ch_a$mul$p
 module top$lanes$0$compositor$ch_a$mul$t(d,q,clock);
     
@@ -659,18 +679,20 @@ module top$lanes$0$compositor$ch_b$mul(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$compositor$ch_b$mul$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$compositor$ch_b$mul$t t(
         .d(t$d),
@@ -681,12 +703,12 @@ module top$lanes$0$compositor$ch_b$mul(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -695,22 +717,40 @@ module top$lanes$0$compositor$ch_b$mul(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$compositor$ch_b$mul
-module top$lanes$0$compositor$ch_b$mul$p(d,q,clock);
+module top$lanes$0$compositor$ch_b$mul$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$compositor$ch_b$mul$p
 module top$lanes$0$compositor$ch_b$mul$t(d,q,clock);
     
@@ -927,18 +967,20 @@ module top$lanes$0$compositor$ch_g$mul(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$compositor$ch_g$mul$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$compositor$ch_g$mul$t t(
         .d(t$d),
@@ -949,12 +991,12 @@ module top$lanes$0$compositor$ch_g$mul(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -963,22 +1005,40 @@ module top$lanes$0$compositor$ch_g$mul(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$compositor$ch_g$mul
-module top$lanes$0$compositor$ch_g$mul$p(d,q,clock);
+module top$lanes$0$compositor$ch_g$mul$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$compositor$ch_g$mul$p
 module top$lanes$0$compositor$ch_g$mul$t(d,q,clock);
     
@@ -1195,18 +1255,20 @@ module top$lanes$0$compositor$ch_r$mul(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$compositor$ch_r$mul$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$compositor$ch_r$mul$t t(
         .d(t$d),
@@ -1217,12 +1279,12 @@ module top$lanes$0$compositor$ch_r$mul(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -1231,22 +1293,40 @@ module top$lanes$0$compositor$ch_r$mul(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$compositor$ch_r$mul
-module top$lanes$0$compositor$ch_r$mul$p(d,q,clock);
+module top$lanes$0$compositor$ch_r$mul$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$compositor$ch_r$mul$p
 module top$lanes$0$compositor$ch_r$mul$t(d,q,clock);
     
@@ -1794,18 +1874,20 @@ module top$lanes$1$compositor$ch_a$mul(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$compositor$ch_a$mul$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$compositor$ch_a$mul$t t(
         .d(t$d),
@@ -1816,12 +1898,12 @@ module top$lanes$1$compositor$ch_a$mul(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -1830,22 +1912,40 @@ module top$lanes$1$compositor$ch_a$mul(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$compositor$ch_a$mul
-module top$lanes$1$compositor$ch_a$mul$p(d,q,clock);
+module top$lanes$1$compositor$ch_a$mul$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$compositor$ch_a$mul$p
 module top$lanes$1$compositor$ch_a$mul$t(d,q,clock);
     
@@ -2062,18 +2162,20 @@ module top$lanes$1$compositor$ch_b$mul(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$compositor$ch_b$mul$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$compositor$ch_b$mul$t t(
         .d(t$d),
@@ -2084,12 +2186,12 @@ module top$lanes$1$compositor$ch_b$mul(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -2098,22 +2200,40 @@ module top$lanes$1$compositor$ch_b$mul(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$compositor$ch_b$mul
-module top$lanes$1$compositor$ch_b$mul$p(d,q,clock);
+module top$lanes$1$compositor$ch_b$mul$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$compositor$ch_b$mul$p
 module top$lanes$1$compositor$ch_b$mul$t(d,q,clock);
     
@@ -2330,18 +2450,20 @@ module top$lanes$1$compositor$ch_g$mul(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$compositor$ch_g$mul$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$compositor$ch_g$mul$t t(
         .d(t$d),
@@ -2352,12 +2474,12 @@ module top$lanes$1$compositor$ch_g$mul(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -2366,22 +2488,40 @@ module top$lanes$1$compositor$ch_g$mul(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$compositor$ch_g$mul
-module top$lanes$1$compositor$ch_g$mul$p(d,q,clock);
+module top$lanes$1$compositor$ch_g$mul$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$compositor$ch_g$mul$p
 module top$lanes$1$compositor$ch_g$mul$t(d,q,clock);
     
@@ -2598,18 +2738,20 @@ module top$lanes$1$compositor$ch_r$mul(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$compositor$ch_r$mul$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$compositor$ch_r$mul$t t(
         .d(t$d),
@@ -2620,12 +2762,12 @@ module top$lanes$1$compositor$ch_r$mul(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -2634,22 +2776,40 @@ module top$lanes$1$compositor$ch_r$mul(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$compositor$ch_r$mul
-module top$lanes$1$compositor$ch_r$mul$p(d,q,clock);
+module top$lanes$1$compositor$ch_r$mul$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$compositor$ch_r$mul$p
 module top$lanes$1$compositor$ch_r$mul$t(d,q,clock);
     

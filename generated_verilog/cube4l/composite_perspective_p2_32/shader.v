@@ -1402,18 +1402,20 @@ module top$lanes$0$shader$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$shader$lit_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$shader$lit_b$t t(
         .d(t$d),
@@ -1424,12 +1426,12 @@ module top$lanes$0$shader$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -1438,22 +1440,40 @@ module top$lanes$0$shader$lit_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_b
-module top$lanes$0$shader$lit_b$p(d,q,clock);
+module top$lanes$0$shader$lit_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lit_b$p
 module top$lanes$0$shader$lit_b$t(d,q,clock);
     
@@ -1486,18 +1506,20 @@ module top$lanes$0$shader$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$shader$lit_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$shader$lit_g$t t(
         .d(t$d),
@@ -1508,12 +1530,12 @@ module top$lanes$0$shader$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -1522,22 +1544,40 @@ module top$lanes$0$shader$lit_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_g
-module top$lanes$0$shader$lit_g$p(d,q,clock);
+module top$lanes$0$shader$lit_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lit_g$p
 module top$lanes$0$shader$lit_g$t(d,q,clock);
     
@@ -1570,18 +1610,20 @@ module top$lanes$0$shader$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$shader$lit_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$shader$lit_r$t t(
         .d(t$d),
@@ -1592,12 +1634,12 @@ module top$lanes$0$shader$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -1606,22 +1648,40 @@ module top$lanes$0$shader$lit_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_r
-module top$lanes$0$shader$lit_r$p(d,q,clock);
+module top$lanes$0$shader$lit_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lit_r$p
 module top$lanes$0$shader$lit_r$t(d,q,clock);
     
@@ -1928,18 +1988,20 @@ module top$lanes$0$shader$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$shader$mul_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$shader$mul_b$t t(
         .d(t$d),
@@ -1950,12 +2012,12 @@ module top$lanes$0$shader$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -1964,22 +2026,40 @@ module top$lanes$0$shader$mul_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_b
-module top$lanes$0$shader$mul_b$p(d,q,clock);
+module top$lanes$0$shader$mul_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$mul_b$p
 module top$lanes$0$shader$mul_b$t(d,q,clock);
     
@@ -2012,18 +2092,20 @@ module top$lanes$0$shader$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$shader$mul_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$shader$mul_g$t t(
         .d(t$d),
@@ -2034,12 +2116,12 @@ module top$lanes$0$shader$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -2048,22 +2130,40 @@ module top$lanes$0$shader$mul_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_g
-module top$lanes$0$shader$mul_g$p(d,q,clock);
+module top$lanes$0$shader$mul_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$mul_g$p
 module top$lanes$0$shader$mul_g$t(d,q,clock);
     
@@ -2096,18 +2196,20 @@ module top$lanes$0$shader$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$shader$mul_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$shader$mul_r$t t(
         .d(t$d),
@@ -2118,12 +2220,12 @@ module top$lanes$0$shader$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -2132,22 +2234,40 @@ module top$lanes$0$shader$mul_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_r
-module top$lanes$0$shader$mul_r$p(d,q,clock);
+module top$lanes$0$shader$mul_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$mul_r$p
 module top$lanes$0$shader$mul_r$t(d,q,clock);
     
@@ -4352,18 +4472,20 @@ module top$lanes$1$shader$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$shader$lit_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$shader$lit_b$t t(
         .d(t$d),
@@ -4374,12 +4496,12 @@ module top$lanes$1$shader$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4388,22 +4510,40 @@ module top$lanes$1$shader$lit_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_b
-module top$lanes$1$shader$lit_b$p(d,q,clock);
+module top$lanes$1$shader$lit_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lit_b$p
 module top$lanes$1$shader$lit_b$t(d,q,clock);
     
@@ -4436,18 +4576,20 @@ module top$lanes$1$shader$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$shader$lit_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$shader$lit_g$t t(
         .d(t$d),
@@ -4458,12 +4600,12 @@ module top$lanes$1$shader$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4472,22 +4614,40 @@ module top$lanes$1$shader$lit_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_g
-module top$lanes$1$shader$lit_g$p(d,q,clock);
+module top$lanes$1$shader$lit_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lit_g$p
 module top$lanes$1$shader$lit_g$t(d,q,clock);
     
@@ -4520,18 +4680,20 @@ module top$lanes$1$shader$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$shader$lit_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$shader$lit_r$t t(
         .d(t$d),
@@ -4542,12 +4704,12 @@ module top$lanes$1$shader$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4556,22 +4718,40 @@ module top$lanes$1$shader$lit_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_r
-module top$lanes$1$shader$lit_r$p(d,q,clock);
+module top$lanes$1$shader$lit_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lit_r$p
 module top$lanes$1$shader$lit_r$t(d,q,clock);
     
@@ -4878,18 +5058,20 @@ module top$lanes$1$shader$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$shader$mul_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$shader$mul_b$t t(
         .d(t$d),
@@ -4900,12 +5082,12 @@ module top$lanes$1$shader$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4914,22 +5096,40 @@ module top$lanes$1$shader$mul_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_b
-module top$lanes$1$shader$mul_b$p(d,q,clock);
+module top$lanes$1$shader$mul_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$mul_b$p
 module top$lanes$1$shader$mul_b$t(d,q,clock);
     
@@ -4962,18 +5162,20 @@ module top$lanes$1$shader$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$shader$mul_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$shader$mul_g$t t(
         .d(t$d),
@@ -4984,12 +5186,12 @@ module top$lanes$1$shader$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4998,22 +5200,40 @@ module top$lanes$1$shader$mul_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_g
-module top$lanes$1$shader$mul_g$p(d,q,clock);
+module top$lanes$1$shader$mul_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$mul_g$p
 module top$lanes$1$shader$mul_g$t(d,q,clock);
     
@@ -5046,18 +5266,20 @@ module top$lanes$1$shader$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$shader$mul_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$shader$mul_r$t t(
         .d(t$d),
@@ -5068,12 +5290,12 @@ module top$lanes$1$shader$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -5082,22 +5304,40 @@ module top$lanes$1$shader$mul_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_r
-module top$lanes$1$shader$mul_r$p(d,q,clock);
+module top$lanes$1$shader$mul_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$mul_r$p
 module top$lanes$1$shader$mul_r$t(d,q,clock);
     

@@ -386,6 +386,10 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -407,6 +411,7 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -429,6 +434,12 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$0$bilinear$ch$0$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -488,16 +499,23 @@ module top$lanes$0$bilinear$ch$0$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -555,6 +573,41 @@ module top$lanes$0$bilinear$ch$0$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$bottom$diff_q
+module top$lanes$0$bilinear$ch$0$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$0$bilinear$ch$0$bottom$narrow
 module top$lanes$0$bilinear$ch$0$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -736,6 +789,10 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -757,6 +814,7 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -779,6 +837,12 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$0$bilinear$ch$0$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -838,16 +902,23 @@ module top$lanes$0$bilinear$ch$0$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -905,6 +976,41 @@ module top$lanes$0$bilinear$ch$0$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$top$diff_q
+module top$lanes$0$bilinear$ch$0$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$0$bilinear$ch$0$top$narrow
 module top$lanes$0$bilinear$ch$0$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -1018,6 +1124,10 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -1039,6 +1149,7 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -1061,6 +1172,12 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$0$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$0$bilinear$ch$0$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -1120,16 +1237,23 @@ module top$lanes$0$bilinear$ch$0$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -1187,6 +1311,41 @@ module top$lanes$0$bilinear$ch$0$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$0$vertical$diff_q
+module top$lanes$0$bilinear$ch$0$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$0$bilinear$ch$0$vertical$narrow
 module top$lanes$0$bilinear$ch$0$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -1410,6 +1569,10 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -1431,6 +1594,7 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -1453,6 +1617,12 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$0$bilinear$ch$1$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -1512,16 +1682,23 @@ module top$lanes$0$bilinear$ch$1$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -1579,6 +1756,41 @@ module top$lanes$0$bilinear$ch$1$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$bottom$diff_q
+module top$lanes$0$bilinear$ch$1$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$0$bilinear$ch$1$bottom$narrow
 module top$lanes$0$bilinear$ch$1$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -1760,6 +1972,10 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -1781,6 +1997,7 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -1803,6 +2020,12 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$0$bilinear$ch$1$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -1862,16 +2085,23 @@ module top$lanes$0$bilinear$ch$1$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -1929,6 +2159,41 @@ module top$lanes$0$bilinear$ch$1$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$top$diff_q
+module top$lanes$0$bilinear$ch$1$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$0$bilinear$ch$1$top$narrow
 module top$lanes$0$bilinear$ch$1$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -2042,6 +2307,10 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -2063,6 +2332,7 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -2085,6 +2355,12 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$1$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$0$bilinear$ch$1$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -2144,16 +2420,23 @@ module top$lanes$0$bilinear$ch$1$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -2211,6 +2494,41 @@ module top$lanes$0$bilinear$ch$1$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$1$vertical$diff_q
+module top$lanes$0$bilinear$ch$1$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$0$bilinear$ch$1$vertical$narrow
 module top$lanes$0$bilinear$ch$1$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -2434,6 +2752,10 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -2455,6 +2777,7 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -2477,6 +2800,12 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$0$bilinear$ch$2$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -2536,16 +2865,23 @@ module top$lanes$0$bilinear$ch$2$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -2603,6 +2939,41 @@ module top$lanes$0$bilinear$ch$2$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$bottom$diff_q
+module top$lanes$0$bilinear$ch$2$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$0$bilinear$ch$2$bottom$narrow
 module top$lanes$0$bilinear$ch$2$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -2784,6 +3155,10 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -2805,6 +3180,7 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -2827,6 +3203,12 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$0$bilinear$ch$2$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -2886,16 +3268,23 @@ module top$lanes$0$bilinear$ch$2$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -2953,6 +3342,41 @@ module top$lanes$0$bilinear$ch$2$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$top$diff_q
+module top$lanes$0$bilinear$ch$2$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$0$bilinear$ch$2$top$narrow
 module top$lanes$0$bilinear$ch$2$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -3066,6 +3490,10 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -3087,6 +3515,7 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -3109,6 +3538,12 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$2$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$0$bilinear$ch$2$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -3168,16 +3603,23 @@ module top$lanes$0$bilinear$ch$2$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -3235,6 +3677,41 @@ module top$lanes$0$bilinear$ch$2$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$2$vertical$diff_q
+module top$lanes$0$bilinear$ch$2$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$0$bilinear$ch$2$vertical$narrow
 module top$lanes$0$bilinear$ch$2$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -3458,6 +3935,10 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -3479,6 +3960,7 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -3501,6 +3983,12 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$0$bilinear$ch$3$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -3560,16 +4048,23 @@ module top$lanes$0$bilinear$ch$3$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -3627,6 +4122,41 @@ module top$lanes$0$bilinear$ch$3$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$bottom$diff_q
+module top$lanes$0$bilinear$ch$3$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$0$bilinear$ch$3$bottom$narrow
 module top$lanes$0$bilinear$ch$3$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -3808,6 +4338,10 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -3829,6 +4363,7 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -3851,6 +4386,12 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$0$bilinear$ch$3$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -3910,16 +4451,23 @@ module top$lanes$0$bilinear$ch$3$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -3977,6 +4525,41 @@ module top$lanes$0$bilinear$ch$3$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$top$diff_q
+module top$lanes$0$bilinear$ch$3$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$0$bilinear$ch$3$top$narrow
 module top$lanes$0$bilinear$ch$3$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -4090,6 +4673,10 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -4111,6 +4698,7 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -4133,6 +4721,12 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$0$bilinear$ch$3$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$0$bilinear$ch$3$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -4192,16 +4786,23 @@ module top$lanes$0$bilinear$ch$3$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -4259,6 +4860,41 @@ module top$lanes$0$bilinear$ch$3$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$bilinear$ch$3$vertical$diff_q
+module top$lanes$0$bilinear$ch$3$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$0$bilinear$ch$3$vertical$narrow
 module top$lanes$0$bilinear$ch$3$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -4919,6 +5555,10 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -4940,6 +5580,7 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -4962,6 +5603,12 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$1$bilinear$ch$0$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -5021,16 +5668,23 @@ module top$lanes$1$bilinear$ch$0$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -5088,6 +5742,41 @@ module top$lanes$1$bilinear$ch$0$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$bottom$diff_q
+module top$lanes$1$bilinear$ch$0$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$1$bilinear$ch$0$bottom$narrow
 module top$lanes$1$bilinear$ch$0$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -5269,6 +5958,10 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -5290,6 +5983,7 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -5312,6 +6006,12 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$1$bilinear$ch$0$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -5371,16 +6071,23 @@ module top$lanes$1$bilinear$ch$0$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -5438,6 +6145,41 @@ module top$lanes$1$bilinear$ch$0$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$top$diff_q
+module top$lanes$1$bilinear$ch$0$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$1$bilinear$ch$0$top$narrow
 module top$lanes$1$bilinear$ch$0$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -5551,6 +6293,10 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -5572,6 +6318,7 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -5594,6 +6341,12 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$0$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$1$bilinear$ch$0$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -5653,16 +6406,23 @@ module top$lanes$1$bilinear$ch$0$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -5720,6 +6480,41 @@ module top$lanes$1$bilinear$ch$0$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$0$vertical$diff_q
+module top$lanes$1$bilinear$ch$0$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$1$bilinear$ch$0$vertical$narrow
 module top$lanes$1$bilinear$ch$0$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -5943,6 +6738,10 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -5964,6 +6763,7 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -5986,6 +6786,12 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$1$bilinear$ch$1$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -6045,16 +6851,23 @@ module top$lanes$1$bilinear$ch$1$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -6112,6 +6925,41 @@ module top$lanes$1$bilinear$ch$1$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$bottom$diff_q
+module top$lanes$1$bilinear$ch$1$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$1$bilinear$ch$1$bottom$narrow
 module top$lanes$1$bilinear$ch$1$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -6293,6 +7141,10 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -6314,6 +7166,7 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -6336,6 +7189,12 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$1$bilinear$ch$1$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -6395,16 +7254,23 @@ module top$lanes$1$bilinear$ch$1$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -6462,6 +7328,41 @@ module top$lanes$1$bilinear$ch$1$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$top$diff_q
+module top$lanes$1$bilinear$ch$1$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$1$bilinear$ch$1$top$narrow
 module top$lanes$1$bilinear$ch$1$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -6575,6 +7476,10 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -6596,6 +7501,7 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -6618,6 +7524,12 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$1$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$1$bilinear$ch$1$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -6677,16 +7589,23 @@ module top$lanes$1$bilinear$ch$1$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -6744,6 +7663,41 @@ module top$lanes$1$bilinear$ch$1$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$1$vertical$diff_q
+module top$lanes$1$bilinear$ch$1$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$1$bilinear$ch$1$vertical$narrow
 module top$lanes$1$bilinear$ch$1$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -6967,6 +7921,10 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -6988,6 +7946,7 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -7010,6 +7969,12 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$1$bilinear$ch$2$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -7069,16 +8034,23 @@ module top$lanes$1$bilinear$ch$2$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -7136,6 +8108,41 @@ module top$lanes$1$bilinear$ch$2$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$bottom$diff_q
+module top$lanes$1$bilinear$ch$2$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$1$bilinear$ch$2$bottom$narrow
 module top$lanes$1$bilinear$ch$2$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -7317,6 +8324,10 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -7338,6 +8349,7 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -7360,6 +8372,12 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$1$bilinear$ch$2$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -7419,16 +8437,23 @@ module top$lanes$1$bilinear$ch$2$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -7486,6 +8511,41 @@ module top$lanes$1$bilinear$ch$2$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$top$diff_q
+module top$lanes$1$bilinear$ch$2$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$1$bilinear$ch$2$top$narrow
 module top$lanes$1$bilinear$ch$2$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -7599,6 +8659,10 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -7620,6 +8684,7 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -7642,6 +8707,12 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$2$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$1$bilinear$ch$2$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -7701,16 +8772,23 @@ module top$lanes$1$bilinear$ch$2$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -7768,6 +8846,41 @@ module top$lanes$1$bilinear$ch$2$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$2$vertical$diff_q
+module top$lanes$1$bilinear$ch$2$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$1$bilinear$ch$2$vertical$narrow
 module top$lanes$1$bilinear$ch$2$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -7991,6 +9104,10 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -8012,6 +9129,7 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -8034,6 +9152,12 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$1$bilinear$ch$3$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -8093,16 +9217,23 @@ module top$lanes$1$bilinear$ch$3$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -8160,6 +9291,41 @@ module top$lanes$1$bilinear$ch$3$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$bottom$diff_q
+module top$lanes$1$bilinear$ch$3$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$1$bilinear$ch$3$bottom$narrow
 module top$lanes$1$bilinear$ch$3$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -8341,6 +9507,10 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -8362,6 +9532,7 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -8384,6 +9555,12 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$1$bilinear$ch$3$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -8443,16 +9620,23 @@ module top$lanes$1$bilinear$ch$3$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -8510,6 +9694,41 @@ module top$lanes$1$bilinear$ch$3$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$top$diff_q
+module top$lanes$1$bilinear$ch$3$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$1$bilinear$ch$3$top$narrow
 module top$lanes$1$bilinear$ch$3$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -8623,6 +9842,10 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -8644,6 +9867,7 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -8666,6 +9890,12 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$1$bilinear$ch$3$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$1$bilinear$ch$3$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -8725,16 +9955,23 @@ module top$lanes$1$bilinear$ch$3$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -8792,6 +10029,41 @@ module top$lanes$1$bilinear$ch$3$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$bilinear$ch$3$vertical$diff_q
+module top$lanes$1$bilinear$ch$3$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$1$bilinear$ch$3$vertical$narrow
 module top$lanes$1$bilinear$ch$3$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -9452,6 +10724,10 @@ module top$lanes$2$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -9473,6 +10749,7 @@ module top$lanes$2$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -9495,6 +10772,12 @@ module top$lanes$2$bilinear$ch$0$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$2$bilinear$ch$0$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -9554,16 +10837,23 @@ module top$lanes$2$bilinear$ch$0$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -9621,6 +10911,41 @@ module top$lanes$2$bilinear$ch$0$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$0$bottom$diff_q
+module top$lanes$2$bilinear$ch$0$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$2$bilinear$ch$0$bottom$narrow
 module top$lanes$2$bilinear$ch$0$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -9802,6 +11127,10 @@ module top$lanes$2$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -9823,6 +11152,7 @@ module top$lanes$2$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -9845,6 +11175,12 @@ module top$lanes$2$bilinear$ch$0$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$2$bilinear$ch$0$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -9904,16 +11240,23 @@ module top$lanes$2$bilinear$ch$0$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -9971,6 +11314,41 @@ module top$lanes$2$bilinear$ch$0$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$0$top$diff_q
+module top$lanes$2$bilinear$ch$0$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$2$bilinear$ch$0$top$narrow
 module top$lanes$2$bilinear$ch$0$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -10084,6 +11462,10 @@ module top$lanes$2$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -10105,6 +11487,7 @@ module top$lanes$2$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -10127,6 +11510,12 @@ module top$lanes$2$bilinear$ch$0$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$0$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$2$bilinear$ch$0$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -10186,16 +11575,23 @@ module top$lanes$2$bilinear$ch$0$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -10253,6 +11649,41 @@ module top$lanes$2$bilinear$ch$0$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$0$vertical$diff_q
+module top$lanes$2$bilinear$ch$0$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$2$bilinear$ch$0$vertical$narrow
 module top$lanes$2$bilinear$ch$0$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -10476,6 +11907,10 @@ module top$lanes$2$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -10497,6 +11932,7 @@ module top$lanes$2$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -10519,6 +11955,12 @@ module top$lanes$2$bilinear$ch$1$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$2$bilinear$ch$1$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -10578,16 +12020,23 @@ module top$lanes$2$bilinear$ch$1$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -10645,6 +12094,41 @@ module top$lanes$2$bilinear$ch$1$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$1$bottom$diff_q
+module top$lanes$2$bilinear$ch$1$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$2$bilinear$ch$1$bottom$narrow
 module top$lanes$2$bilinear$ch$1$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -10826,6 +12310,10 @@ module top$lanes$2$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -10847,6 +12335,7 @@ module top$lanes$2$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -10869,6 +12358,12 @@ module top$lanes$2$bilinear$ch$1$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$2$bilinear$ch$1$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -10928,16 +12423,23 @@ module top$lanes$2$bilinear$ch$1$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -10995,6 +12497,41 @@ module top$lanes$2$bilinear$ch$1$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$1$top$diff_q
+module top$lanes$2$bilinear$ch$1$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$2$bilinear$ch$1$top$narrow
 module top$lanes$2$bilinear$ch$1$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -11108,6 +12645,10 @@ module top$lanes$2$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -11129,6 +12670,7 @@ module top$lanes$2$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -11151,6 +12693,12 @@ module top$lanes$2$bilinear$ch$1$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$1$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$2$bilinear$ch$1$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -11210,16 +12758,23 @@ module top$lanes$2$bilinear$ch$1$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -11277,6 +12832,41 @@ module top$lanes$2$bilinear$ch$1$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$1$vertical$diff_q
+module top$lanes$2$bilinear$ch$1$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$2$bilinear$ch$1$vertical$narrow
 module top$lanes$2$bilinear$ch$1$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -11500,6 +13090,10 @@ module top$lanes$2$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -11521,6 +13115,7 @@ module top$lanes$2$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -11543,6 +13138,12 @@ module top$lanes$2$bilinear$ch$2$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$2$bilinear$ch$2$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -11602,16 +13203,23 @@ module top$lanes$2$bilinear$ch$2$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -11669,6 +13277,41 @@ module top$lanes$2$bilinear$ch$2$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$2$bottom$diff_q
+module top$lanes$2$bilinear$ch$2$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$2$bilinear$ch$2$bottom$narrow
 module top$lanes$2$bilinear$ch$2$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -11850,6 +13493,10 @@ module top$lanes$2$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -11871,6 +13518,7 @@ module top$lanes$2$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -11893,6 +13541,12 @@ module top$lanes$2$bilinear$ch$2$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$2$bilinear$ch$2$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -11952,16 +13606,23 @@ module top$lanes$2$bilinear$ch$2$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -12019,6 +13680,41 @@ module top$lanes$2$bilinear$ch$2$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$2$top$diff_q
+module top$lanes$2$bilinear$ch$2$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$2$bilinear$ch$2$top$narrow
 module top$lanes$2$bilinear$ch$2$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -12132,6 +13828,10 @@ module top$lanes$2$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -12153,6 +13853,7 @@ module top$lanes$2$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -12175,6 +13876,12 @@ module top$lanes$2$bilinear$ch$2$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$2$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$2$bilinear$ch$2$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -12234,16 +13941,23 @@ module top$lanes$2$bilinear$ch$2$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -12301,6 +14015,41 @@ module top$lanes$2$bilinear$ch$2$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$2$vertical$diff_q
+module top$lanes$2$bilinear$ch$2$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$2$bilinear$ch$2$vertical$narrow
 module top$lanes$2$bilinear$ch$2$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -12524,6 +14273,10 @@ module top$lanes$2$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -12545,6 +14298,7 @@ module top$lanes$2$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -12567,6 +14321,12 @@ module top$lanes$2$bilinear$ch$3$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$2$bilinear$ch$3$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -12626,16 +14386,23 @@ module top$lanes$2$bilinear$ch$3$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -12693,6 +14460,41 @@ module top$lanes$2$bilinear$ch$3$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$3$bottom$diff_q
+module top$lanes$2$bilinear$ch$3$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$2$bilinear$ch$3$bottom$narrow
 module top$lanes$2$bilinear$ch$3$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -12874,6 +14676,10 @@ module top$lanes$2$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -12895,6 +14701,7 @@ module top$lanes$2$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -12917,6 +14724,12 @@ module top$lanes$2$bilinear$ch$3$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$2$bilinear$ch$3$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -12976,16 +14789,23 @@ module top$lanes$2$bilinear$ch$3$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -13043,6 +14863,41 @@ module top$lanes$2$bilinear$ch$3$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$3$top$diff_q
+module top$lanes$2$bilinear$ch$3$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$2$bilinear$ch$3$top$narrow
 module top$lanes$2$bilinear$ch$3$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -13156,6 +15011,10 @@ module top$lanes$2$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -13177,6 +15036,7 @@ module top$lanes$2$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -13199,6 +15059,12 @@ module top$lanes$2$bilinear$ch$3$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$2$bilinear$ch$3$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$2$bilinear$ch$3$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -13258,16 +15124,23 @@ module top$lanes$2$bilinear$ch$3$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -13325,6 +15198,41 @@ module top$lanes$2$bilinear$ch$3$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$bilinear$ch$3$vertical$diff_q
+module top$lanes$2$bilinear$ch$3$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$2$bilinear$ch$3$vertical$narrow
 module top$lanes$2$bilinear$ch$3$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -13985,6 +15893,10 @@ module top$lanes$3$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -14006,6 +15918,7 @@ module top$lanes$3$bilinear$ch$0$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -14028,6 +15941,12 @@ module top$lanes$3$bilinear$ch$0$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$3$bilinear$ch$0$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -14087,16 +16006,23 @@ module top$lanes$3$bilinear$ch$0$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -14154,6 +16080,41 @@ module top$lanes$3$bilinear$ch$0$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$0$bottom$diff_q
+module top$lanes$3$bilinear$ch$0$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$3$bilinear$ch$0$bottom$narrow
 module top$lanes$3$bilinear$ch$0$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -14335,6 +16296,10 @@ module top$lanes$3$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -14356,6 +16321,7 @@ module top$lanes$3$bilinear$ch$0$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -14378,6 +16344,12 @@ module top$lanes$3$bilinear$ch$0$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$3$bilinear$ch$0$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -14437,16 +16409,23 @@ module top$lanes$3$bilinear$ch$0$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -14504,6 +16483,41 @@ module top$lanes$3$bilinear$ch$0$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$0$top$diff_q
+module top$lanes$3$bilinear$ch$0$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$3$bilinear$ch$0$top$narrow
 module top$lanes$3$bilinear$ch$0$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -14617,6 +16631,10 @@ module top$lanes$3$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -14638,6 +16656,7 @@ module top$lanes$3$bilinear$ch$0$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -14660,6 +16679,12 @@ module top$lanes$3$bilinear$ch$0$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$0$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$3$bilinear$ch$0$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -14719,16 +16744,23 @@ module top$lanes$3$bilinear$ch$0$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -14786,6 +16818,41 @@ module top$lanes$3$bilinear$ch$0$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$0$vertical$diff_q
+module top$lanes$3$bilinear$ch$0$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$3$bilinear$ch$0$vertical$narrow
 module top$lanes$3$bilinear$ch$0$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -15009,6 +17076,10 @@ module top$lanes$3$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -15030,6 +17101,7 @@ module top$lanes$3$bilinear$ch$1$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -15052,6 +17124,12 @@ module top$lanes$3$bilinear$ch$1$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$3$bilinear$ch$1$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -15111,16 +17189,23 @@ module top$lanes$3$bilinear$ch$1$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -15178,6 +17263,41 @@ module top$lanes$3$bilinear$ch$1$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$1$bottom$diff_q
+module top$lanes$3$bilinear$ch$1$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$3$bilinear$ch$1$bottom$narrow
 module top$lanes$3$bilinear$ch$1$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -15359,6 +17479,10 @@ module top$lanes$3$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -15380,6 +17504,7 @@ module top$lanes$3$bilinear$ch$1$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -15402,6 +17527,12 @@ module top$lanes$3$bilinear$ch$1$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$3$bilinear$ch$1$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -15461,16 +17592,23 @@ module top$lanes$3$bilinear$ch$1$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -15528,6 +17666,41 @@ module top$lanes$3$bilinear$ch$1$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$1$top$diff_q
+module top$lanes$3$bilinear$ch$1$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$3$bilinear$ch$1$top$narrow
 module top$lanes$3$bilinear$ch$1$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -15641,6 +17814,10 @@ module top$lanes$3$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -15662,6 +17839,7 @@ module top$lanes$3$bilinear$ch$1$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -15684,6 +17862,12 @@ module top$lanes$3$bilinear$ch$1$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$1$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$3$bilinear$ch$1$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -15743,16 +17927,23 @@ module top$lanes$3$bilinear$ch$1$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -15810,6 +18001,41 @@ module top$lanes$3$bilinear$ch$1$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$1$vertical$diff_q
+module top$lanes$3$bilinear$ch$1$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$3$bilinear$ch$1$vertical$narrow
 module top$lanes$3$bilinear$ch$1$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -16033,6 +18259,10 @@ module top$lanes$3$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -16054,6 +18284,7 @@ module top$lanes$3$bilinear$ch$2$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -16076,6 +18307,12 @@ module top$lanes$3$bilinear$ch$2$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$3$bilinear$ch$2$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -16135,16 +18372,23 @@ module top$lanes$3$bilinear$ch$2$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -16202,6 +18446,41 @@ module top$lanes$3$bilinear$ch$2$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$2$bottom$diff_q
+module top$lanes$3$bilinear$ch$2$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$3$bilinear$ch$2$bottom$narrow
 module top$lanes$3$bilinear$ch$2$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -16383,6 +18662,10 @@ module top$lanes$3$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -16404,6 +18687,7 @@ module top$lanes$3$bilinear$ch$2$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -16426,6 +18710,12 @@ module top$lanes$3$bilinear$ch$2$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$3$bilinear$ch$2$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -16485,16 +18775,23 @@ module top$lanes$3$bilinear$ch$2$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -16552,6 +18849,41 @@ module top$lanes$3$bilinear$ch$2$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$2$top$diff_q
+module top$lanes$3$bilinear$ch$2$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$3$bilinear$ch$2$top$narrow
 module top$lanes$3$bilinear$ch$2$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -16665,6 +18997,10 @@ module top$lanes$3$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -16686,6 +19022,7 @@ module top$lanes$3$bilinear$ch$2$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -16708,6 +19045,12 @@ module top$lanes$3$bilinear$ch$2$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$2$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$3$bilinear$ch$2$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -16767,16 +19110,23 @@ module top$lanes$3$bilinear$ch$2$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -16834,6 +19184,41 @@ module top$lanes$3$bilinear$ch$2$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$2$vertical$diff_q
+module top$lanes$3$bilinear$ch$2$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$3$bilinear$ch$2$vertical$narrow
 module top$lanes$3$bilinear$ch$2$vertical$prod_q(d,q,clock);
     
     // Module arguments
@@ -17057,6 +19442,10 @@ module top$lanes$3$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -17078,6 +19467,7 @@ module top$lanes$3$bilinear$ch$3$bottom(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -17100,6 +19490,12 @@ module top$lanes$3$bilinear$ch$3$bottom(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$bottom$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$3$bilinear$ch$3$bottom$up_q2 up_q2(
         .d(up_q2$d),
@@ -17159,16 +19555,23 @@ module top$lanes$3$bilinear$ch$3$bottom(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -17226,6 +19629,41 @@ module top$lanes$3$bilinear$ch$3$bottom$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$3$bottom$diff_q
+module top$lanes$3$bilinear$ch$3$bottom$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$3$bilinear$ch$3$bottom$narrow
 module top$lanes$3$bilinear$ch$3$bottom$prod_q(d,q,clock);
     
     // Module arguments
@@ -17407,6 +19845,10 @@ module top$lanes$3$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -17428,6 +19870,7 @@ module top$lanes$3$bilinear$ch$3$top(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -17450,6 +19893,12 @@ module top$lanes$3$bilinear$ch$3$top(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$top$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$3$bilinear$ch$3$top$up_q2 up_q2(
         .d(up_q2$d),
@@ -17509,16 +19958,23 @@ module top$lanes$3$bilinear$ch$3$top(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -17576,6 +20032,41 @@ module top$lanes$3$bilinear$ch$3$top$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$3$top$diff_q
+module top$lanes$3$bilinear$ch$3$top$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$3$bilinear$ch$3$top$narrow
 module top$lanes$3$bilinear$ch$3$top$prod_q(d,q,clock);
     
     // Module arguments
@@ -17689,6 +20180,10 @@ module top$lanes$3$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [15:0] w_q$d;
     wire  [15:0] w_q$q;
     reg  w_q$clock;
+    reg  narrow$clock;
+    reg  [15:0] narrow$a;
+    reg  [15:0] narrow$b;
+    wire  [31:0] narrow$p;
     reg  up_q2$d;
     wire  up_q2$q;
     reg  up_q2$clock;
@@ -17710,6 +20205,7 @@ module top$lanes$3$bilinear$ch$3$vertical(clock,a,b,w,y);
     reg  [31:0] diff;
     reg  [15:0] w_in;
     reg  [63:0] prod;
+    reg  [63:0] prod_r;
     reg  [63:0] sum;
     
     // Sub module instances
@@ -17732,6 +20228,12 @@ module top$lanes$3$bilinear$ch$3$vertical(clock,a,b,w,y);
         .d(w_q$d),
         .q(w_q$q),
         .clock(w_q$clock)
+    );
+    top$lanes$3$bilinear$ch$3$vertical$narrow narrow(
+        .clock(narrow$clock),
+        .a(narrow$a),
+        .b(narrow$b),
+        .p(narrow$p)
     );
     top$lanes$3$bilinear$ch$3$vertical$up_q2 up_q2(
         .d(up_q2$d),
@@ -17791,16 +20293,23 @@ module top$lanes$3$bilinear$ch$3$vertical(clock,a,b,w,y);
             diff = diff_q$q;
             w_in = w_q$q;
         end
-        prod = 64'(diff[('h0)+:(16)] * w_in);
+        narrow$clock = clock;
+        narrow$a = diff[('h0)+:(16)];
+        narrow$b = w_in;
+        prod = 'h0;
         if (wide) begin
             prod = (64'(diff[('h10)+:(16)] * w_in) << 'h10) + 64'(diff[('h0)+:(16)] * w_in);
         end
         up_q2$d = up;
         a_q2$d = (64'(a_in) << shift) | half;
         prod_q$d = prod;
-        sum = a_q2$q - prod_q$q;
+        prod_r = 64'(narrow$p);
+        if (wide) begin
+            prod_r = prod_q$q;
+        end
+        sum = a_q2$q - prod_r;
         if (up_q2$q) begin
-            sum = a_q2$q + prod_q$q;
+            sum = a_q2$q + prod_r;
         end
         y_q$d = 32'(sum >> shift);
         y = y_q$q;
@@ -17858,6 +20367,41 @@ module top$lanes$3$bilinear$ch$3$vertical$diff_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$bilinear$ch$3$vertical$diff_q
+module top$lanes$3$bilinear$ch$3$vertical$narrow(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
+    initial begin
+       p = 'h0;
+    end
+    
+    always @(posedge clock) begin
+       p <= a * b;
+    end
+    `endif
+endmodule // top$lanes$3$bilinear$ch$3$vertical$narrow
 module top$lanes$3$bilinear$ch$3$vertical$prod_q(d,q,clock);
     
     // Module arguments

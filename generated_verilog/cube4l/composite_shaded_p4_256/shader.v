@@ -1486,24 +1486,30 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [15:0] mh_q$2$d;
     wire  [15:0] mh_q$2$q;
     reg  mh_q$2$clock;
-    reg  [31:0] p_l$0$d;
-    wire  [31:0] p_l$0$q;
     reg  p_l$0$clock;
-    reg  [31:0] p_l$1$d;
-    wire  [31:0] p_l$1$q;
+    reg  [15:0] p_l$0$a;
+    reg  [15:0] p_l$0$b;
+    wire  [31:0] p_l$0$p;
     reg  p_l$1$clock;
-    reg  [31:0] p_l$2$d;
-    wire  [31:0] p_l$2$q;
+    reg  [15:0] p_l$1$a;
+    reg  [15:0] p_l$1$b;
+    wire  [31:0] p_l$1$p;
     reg  p_l$2$clock;
-    reg  [31:0] p_h$0$d;
-    wire  [31:0] p_h$0$q;
+    reg  [15:0] p_l$2$a;
+    reg  [15:0] p_l$2$b;
+    wire  [31:0] p_l$2$p;
     reg  p_h$0$clock;
-    reg  [31:0] p_h$1$d;
-    wire  [31:0] p_h$1$q;
+    reg  [15:0] p_h$0$a;
+    reg  [15:0] p_h$0$b;
+    wire  [31:0] p_h$0$p;
     reg  p_h$1$clock;
-    reg  [31:0] p_h$2$d;
-    wire  [31:0] p_h$2$q;
+    reg  [15:0] p_h$1$a;
+    reg  [15:0] p_h$1$b;
+    wire  [31:0] p_h$1$p;
     reg  p_h$2$clock;
+    reg  [15:0] p_h$2$a;
+    reg  [15:0] p_h$2$b;
+    wire  [31:0] p_h$2$p;
     reg  sl_q$0$d;
     wire  sl_q$0$q;
     reg  sl_q$0$clock;
@@ -1552,18 +1558,22 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  lit_3$d;
     wire  lit_3$q;
     reg  lit_3$clock;
-    reg  [31:0] t_l$d;
-    wire  [31:0] t_l$q;
     reg  t_l$clock;
-    reg  [31:0] t_h$d;
-    wire  [31:0] t_h$q;
+    reg  [15:0] t_l$a;
+    reg  [15:0] t_l$b;
+    wire  [31:0] t_l$p;
     reg  t_h$clock;
-    reg  [31:0] u_l$d;
-    wire  [31:0] u_l$q;
+    reg  [15:0] t_h$a;
+    reg  [15:0] t_h$b;
+    wire  [31:0] t_h$p;
     reg  u_l$clock;
-    reg  [31:0] u_h$d;
-    wire  [31:0] u_h$q;
+    reg  [15:0] u_l$a;
+    reg  [15:0] u_l$b;
+    wire  [31:0] u_l$p;
     reg  u_h$clock;
+    reg  [15:0] u_h$a;
+    reg  [15:0] u_h$b;
+    wire  [31:0] u_h$p;
     reg  lit_4$d;
     wire  lit_4$q;
     reg  lit_4$clock;
@@ -1682,34 +1692,40 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .clock(mh_q$2$clock)
     );
     top$lanes$0$shader$lighting$p_l$0 p_l$0(
-        .d(p_l$0$d),
-        .q(p_l$0$q),
-        .clock(p_l$0$clock)
+        .clock(p_l$0$clock),
+        .a(p_l$0$a),
+        .b(p_l$0$b),
+        .p(p_l$0$p)
     );
     top$lanes$0$shader$lighting$p_l$1 p_l$1(
-        .d(p_l$1$d),
-        .q(p_l$1$q),
-        .clock(p_l$1$clock)
+        .clock(p_l$1$clock),
+        .a(p_l$1$a),
+        .b(p_l$1$b),
+        .p(p_l$1$p)
     );
     top$lanes$0$shader$lighting$p_l$2 p_l$2(
-        .d(p_l$2$d),
-        .q(p_l$2$q),
-        .clock(p_l$2$clock)
+        .clock(p_l$2$clock),
+        .a(p_l$2$a),
+        .b(p_l$2$b),
+        .p(p_l$2$p)
     );
     top$lanes$0$shader$lighting$p_h$0 p_h$0(
-        .d(p_h$0$d),
-        .q(p_h$0$q),
-        .clock(p_h$0$clock)
+        .clock(p_h$0$clock),
+        .a(p_h$0$a),
+        .b(p_h$0$b),
+        .p(p_h$0$p)
     );
     top$lanes$0$shader$lighting$p_h$1 p_h$1(
-        .d(p_h$1$d),
-        .q(p_h$1$q),
-        .clock(p_h$1$clock)
+        .clock(p_h$1$clock),
+        .a(p_h$1$a),
+        .b(p_h$1$b),
+        .p(p_h$1$p)
     );
     top$lanes$0$shader$lighting$p_h$2 p_h$2(
-        .d(p_h$2$d),
-        .q(p_h$2$q),
-        .clock(p_h$2$clock)
+        .clock(p_h$2$clock),
+        .a(p_h$2$a),
+        .b(p_h$2$b),
+        .p(p_h$2$p)
     );
     top$lanes$0$shader$lighting$sl_q$0 sl_q$0(
         .d(sl_q$0$d),
@@ -1792,24 +1808,28 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .clock(lit_3$clock)
     );
     top$lanes$0$shader$lighting$t_l t_l(
-        .d(t_l$d),
-        .q(t_l$q),
-        .clock(t_l$clock)
+        .clock(t_l$clock),
+        .a(t_l$a),
+        .b(t_l$b),
+        .p(t_l$p)
     );
     top$lanes$0$shader$lighting$t_h t_h(
-        .d(t_h$d),
-        .q(t_h$q),
-        .clock(t_h$clock)
+        .clock(t_h$clock),
+        .a(t_h$a),
+        .b(t_h$b),
+        .p(t_h$p)
     );
     top$lanes$0$shader$lighting$u_l u_l(
-        .d(u_l$d),
-        .q(u_l$q),
-        .clock(u_l$clock)
+        .clock(u_l$clock),
+        .a(u_l$a),
+        .b(u_l$b),
+        .p(u_l$p)
     );
     top$lanes$0$shader$lighting$u_h u_h(
-        .d(u_h$d),
-        .q(u_h$q),
-        .clock(u_h$clock)
+        .clock(u_h$clock),
+        .a(u_h$a),
+        .b(u_h$b),
+        .p(u_h$p)
     );
     top$lanes$0$shader$lighting$lit_4 lit_4(
         .d(lit_4$d),
@@ -1859,10 +1879,6 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         d_h$clock = clock;
         rn_3$clock = clock;
         lit_3$clock = clock;
-        t_l$clock = clock;
-        t_h$clock = clock;
-        u_l$clock = clock;
-        u_h$clock = clock;
         lit_4$clock = clock;
         idx_l$clock = clock;
         idx_h$clock = clock;
@@ -1880,10 +1896,6 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         d_h$d = d_h$q;
         rn_3$d = rn_3$q;
         lit_3$d = lit_3$q;
-        t_l$d = t_l$q;
-        t_h$d = t_h$q;
-        u_l$d = u_l$q;
-        u_h$d = u_h$q;
         lit_4$d = lit_4$q;
         idx_l$d = idx_l$q;
         idx_h$d = idx_h$q;
@@ -1936,33 +1948,39 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         sh_q$0$clock = clock;
         p_l$0$clock = clock;
         p_h$0$clock = clock;
+        p_l$0$a = qm$0;
+        p_h$0$a = qm$0;
         square$0$address = q_mag$0;
         ml_q$0$d = m_l$0;
         mh_q$0$d = m_h$0;
-        p_l$0$d = qm$0 * ml_q$0$q;
-        p_h$0$d = qm$0 * mh_q$0$q;
+        p_l$0$b = ml_q$0$q;
+        p_h$0$b = mh_q$0$q;
         ml_q$1$clock = clock;
         mh_q$1$clock = clock;
         sl_q$1$clock = clock;
         sh_q$1$clock = clock;
         p_l$1$clock = clock;
         p_h$1$clock = clock;
+        p_l$1$a = qm$1;
+        p_h$1$a = qm$1;
         square$1$address = q_mag$1;
         ml_q$1$d = m_l$1;
         mh_q$1$d = m_h$1;
-        p_l$1$d = qm$1 * ml_q$1$q;
-        p_h$1$d = qm$1 * mh_q$1$q;
+        p_l$1$b = ml_q$1$q;
+        p_h$1$b = mh_q$1$q;
         ml_q$2$clock = clock;
         mh_q$2$clock = clock;
         sl_q$2$clock = clock;
         sh_q$2$clock = clock;
         p_l$2$clock = clock;
         p_h$2$clock = clock;
+        p_l$2$a = qm$2;
+        p_h$2$a = qm$2;
         square$2$address = q_mag$2;
         ml_q$2$d = m_l$2;
         mh_q$2$d = m_h$2;
-        p_l$2$d = qm$2 * ml_q$2$q;
-        p_h$2$d = qm$2 * mh_q$2$q;
+        p_l$2$b = ml_q$2$q;
+        p_h$2$b = mh_q$2$q;
         sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
         sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
         sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
@@ -1971,29 +1989,29 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
         n2 = square$0$data + square$1$data + square$2$data;
         n2_q$d = n2;
-        t_pl$0 = p_l$0$q;
+        t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$q;
+            t_pl$0 = 'h0 - p_l$0$p;
         end
-        t_ph$0 = p_h$0$q;
+        t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$q;
+            t_ph$0 = 'h0 - p_h$0$p;
         end
-        t_pl$1 = p_l$1$q;
+        t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$q;
+            t_pl$1 = 'h0 - p_l$1$p;
         end
-        t_ph$1 = p_h$1$q;
+        t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$q;
+            t_ph$1 = 'h0 - p_h$1$p;
         end
-        t_pl$2 = p_l$2$q;
+        t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$q;
+            t_pl$2 = 'h0 - p_l$2$p;
         end
-        t_ph$2 = p_h$2$q;
+        t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$q;
+            t_ph$2 = 'h0 - p_h$2$p;
         end
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
@@ -2019,20 +2037,24 @@ module top$lanes$0$shader$lighting(clock,host_write,host_address,host_data,q_neg
         end
         rn_3$d = rn$q;
         lit_3$d = ~dot_l['h1f] & (dot_l != 'h0);
-        t_l$d = d_l$q[('h0)+:(16)] * rn_3$q;
-        t_h$d = d_h$q[('h0)+:(16)] * rn_3$q;
-        u_l$d = 'h0;
-        u_h$d = 'h0;
-        if (wide_dot) begin
-            u_l$d = d_l$q[('h10)+:(16)] * rn_3$q;
-            u_h$d = d_h$q[('h10)+:(16)] * rn_3$q;
-        end
+        t_l$clock = clock;
+        t_h$clock = clock;
+        u_l$clock = clock;
+        u_h$clock = clock;
+        t_l$a = d_l$q[('h0)+:(16)];
+        t_h$a = d_h$q[('h0)+:(16)];
+        u_l$a = d_l$q[('h10)+:(16)];
+        u_h$a = d_h$q[('h10)+:(16)];
+        t_l$b = rn_3$q;
+        t_h$b = rn_3$q;
+        u_l$b = rn_3$q;
+        u_h$b = rn_3$q;
         lit_4$d = lit_3$q;
-        tt_l = 64'(t_l$q);
-        tt_h = 64'(t_h$q);
+        tt_l = 64'(t_l$p);
+        tt_h = 64'(t_h$p);
         if (wide_dot) begin
-            tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
-            tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
+            tt_l = 64'(t_l$p) + (64'(u_l$p) << 'h10);
+            tt_h = 64'(t_h$p) + (64'(u_h$p) << 'h10);
         end
         i_l = 10'(((tt_l << 'ha) - tt_l + half_ulp) >> shift);
         i_h = 10'(((tt_h << 'ha) - tt_h + half_ulp) >> shift);
@@ -2400,107 +2422,215 @@ module top$lanes$0$shader$lighting$n2_q(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$lighting$n2_q
-module top$lanes$0$shader$lighting$p_h$0(d,q,clock);
+module top$lanes$0$shader$lighting$p_h$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lighting$p_h$0
-module top$lanes$0$shader$lighting$p_h$1(d,q,clock);
+module top$lanes$0$shader$lighting$p_h$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lighting$p_h$1
-module top$lanes$0$shader$lighting$p_h$2(d,q,clock);
+module top$lanes$0$shader$lighting$p_h$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lighting$p_h$2
-module top$lanes$0$shader$lighting$p_l$0(d,q,clock);
+module top$lanes$0$shader$lighting$p_l$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lighting$p_l$0
-module top$lanes$0$shader$lighting$p_l$1(d,q,clock);
+module top$lanes$0$shader$lighting$p_l$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lighting$p_l$1
-module top$lanes$0$shader$lighting$p_l$2(d,q,clock);
+module top$lanes$0$shader$lighting$p_l$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lighting$p_l$2
 module top$lanes$0$shader$lighting$pair_h(d,q,clock);
     
@@ -3964,39 +4094,75 @@ module top$lanes$0$shader$lighting$square$2(address,data);
       default: data = 16'h0;
     endcase
 endmodule // top$lanes$0$shader$lighting$square$2
-module top$lanes$0$shader$lighting$t_h(d,q,clock);
+module top$lanes$0$shader$lighting$t_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lighting$t_h
-module top$lanes$0$shader$lighting$t_l(d,q,clock);
+module top$lanes$0$shader$lighting$t_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lighting$t_l
 module top$lanes$0$shader$lighting$third_h(d,q,clock);
     
@@ -4032,39 +4198,39 @@ module top$lanes$0$shader$lighting$third_l(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$lighting$third_l
-module top$lanes$0$shader$lighting$u_h(d,q,clock);
+module top$lanes$0$shader$lighting$u_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= 'h0;
     end
-          
 endmodule // top$lanes$0$shader$lighting$u_h
-module top$lanes$0$shader$lighting$u_l(d,q,clock);
+module top$lanes$0$shader$lighting$u_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= 'h0;
     end
-          
 endmodule // top$lanes$0$shader$lighting$u_l
 module top$lanes$0$shader$lit_b(clock,a,b,y);
     
@@ -4080,18 +4246,20 @@ module top$lanes$0$shader$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$shader$lit_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$shader$lit_b$t t(
         .d(t$d),
@@ -4102,12 +4270,12 @@ module top$lanes$0$shader$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4116,22 +4284,40 @@ module top$lanes$0$shader$lit_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_b
-module top$lanes$0$shader$lit_b$p(d,q,clock);
+module top$lanes$0$shader$lit_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lit_b$p
 module top$lanes$0$shader$lit_b$t(d,q,clock);
     
@@ -4164,18 +4350,20 @@ module top$lanes$0$shader$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$shader$lit_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$shader$lit_g$t t(
         .d(t$d),
@@ -4186,12 +4374,12 @@ module top$lanes$0$shader$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4200,22 +4388,40 @@ module top$lanes$0$shader$lit_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_g
-module top$lanes$0$shader$lit_g$p(d,q,clock);
+module top$lanes$0$shader$lit_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lit_g$p
 module top$lanes$0$shader$lit_g$t(d,q,clock);
     
@@ -4248,18 +4454,20 @@ module top$lanes$0$shader$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$shader$lit_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$shader$lit_r$t t(
         .d(t$d),
@@ -4270,12 +4478,12 @@ module top$lanes$0$shader$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4284,22 +4492,40 @@ module top$lanes$0$shader$lit_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$lit_r
-module top$lanes$0$shader$lit_r$p(d,q,clock);
+module top$lanes$0$shader$lit_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$lit_r$p
 module top$lanes$0$shader$lit_r$t(d,q,clock);
     
@@ -4606,18 +4832,20 @@ module top$lanes$0$shader$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$shader$mul_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$shader$mul_b$t t(
         .d(t$d),
@@ -4628,12 +4856,12 @@ module top$lanes$0$shader$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4642,22 +4870,40 @@ module top$lanes$0$shader$mul_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_b
-module top$lanes$0$shader$mul_b$p(d,q,clock);
+module top$lanes$0$shader$mul_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$mul_b$p
 module top$lanes$0$shader$mul_b$t(d,q,clock);
     
@@ -4690,18 +4936,20 @@ module top$lanes$0$shader$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$shader$mul_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$shader$mul_g$t t(
         .d(t$d),
@@ -4712,12 +4960,12 @@ module top$lanes$0$shader$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4726,22 +4974,40 @@ module top$lanes$0$shader$mul_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_g
-module top$lanes$0$shader$mul_g$p(d,q,clock);
+module top$lanes$0$shader$mul_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$mul_g$p
 module top$lanes$0$shader$mul_g$t(d,q,clock);
     
@@ -4774,18 +5040,20 @@ module top$lanes$0$shader$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$0$shader$mul_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$0$shader$mul_r$t t(
         .d(t$d),
@@ -4796,12 +5064,12 @@ module top$lanes$0$shader$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -4810,22 +5078,40 @@ module top$lanes$0$shader$mul_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$0$shader$mul_r
-module top$lanes$0$shader$mul_r$p(d,q,clock);
+module top$lanes$0$shader$mul_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$0$shader$mul_r$p
 module top$lanes$0$shader$mul_r$t(d,q,clock);
     
@@ -8001,24 +8287,30 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [15:0] mh_q$2$d;
     wire  [15:0] mh_q$2$q;
     reg  mh_q$2$clock;
-    reg  [31:0] p_l$0$d;
-    wire  [31:0] p_l$0$q;
     reg  p_l$0$clock;
-    reg  [31:0] p_l$1$d;
-    wire  [31:0] p_l$1$q;
+    reg  [15:0] p_l$0$a;
+    reg  [15:0] p_l$0$b;
+    wire  [31:0] p_l$0$p;
     reg  p_l$1$clock;
-    reg  [31:0] p_l$2$d;
-    wire  [31:0] p_l$2$q;
+    reg  [15:0] p_l$1$a;
+    reg  [15:0] p_l$1$b;
+    wire  [31:0] p_l$1$p;
     reg  p_l$2$clock;
-    reg  [31:0] p_h$0$d;
-    wire  [31:0] p_h$0$q;
+    reg  [15:0] p_l$2$a;
+    reg  [15:0] p_l$2$b;
+    wire  [31:0] p_l$2$p;
     reg  p_h$0$clock;
-    reg  [31:0] p_h$1$d;
-    wire  [31:0] p_h$1$q;
+    reg  [15:0] p_h$0$a;
+    reg  [15:0] p_h$0$b;
+    wire  [31:0] p_h$0$p;
     reg  p_h$1$clock;
-    reg  [31:0] p_h$2$d;
-    wire  [31:0] p_h$2$q;
+    reg  [15:0] p_h$1$a;
+    reg  [15:0] p_h$1$b;
+    wire  [31:0] p_h$1$p;
     reg  p_h$2$clock;
+    reg  [15:0] p_h$2$a;
+    reg  [15:0] p_h$2$b;
+    wire  [31:0] p_h$2$p;
     reg  sl_q$0$d;
     wire  sl_q$0$q;
     reg  sl_q$0$clock;
@@ -8067,18 +8359,22 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  lit_3$d;
     wire  lit_3$q;
     reg  lit_3$clock;
-    reg  [31:0] t_l$d;
-    wire  [31:0] t_l$q;
     reg  t_l$clock;
-    reg  [31:0] t_h$d;
-    wire  [31:0] t_h$q;
+    reg  [15:0] t_l$a;
+    reg  [15:0] t_l$b;
+    wire  [31:0] t_l$p;
     reg  t_h$clock;
-    reg  [31:0] u_l$d;
-    wire  [31:0] u_l$q;
+    reg  [15:0] t_h$a;
+    reg  [15:0] t_h$b;
+    wire  [31:0] t_h$p;
     reg  u_l$clock;
-    reg  [31:0] u_h$d;
-    wire  [31:0] u_h$q;
+    reg  [15:0] u_l$a;
+    reg  [15:0] u_l$b;
+    wire  [31:0] u_l$p;
     reg  u_h$clock;
+    reg  [15:0] u_h$a;
+    reg  [15:0] u_h$b;
+    wire  [31:0] u_h$p;
     reg  lit_4$d;
     wire  lit_4$q;
     reg  lit_4$clock;
@@ -8197,34 +8493,40 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .clock(mh_q$2$clock)
     );
     top$lanes$1$shader$lighting$p_l$0 p_l$0(
-        .d(p_l$0$d),
-        .q(p_l$0$q),
-        .clock(p_l$0$clock)
+        .clock(p_l$0$clock),
+        .a(p_l$0$a),
+        .b(p_l$0$b),
+        .p(p_l$0$p)
     );
     top$lanes$1$shader$lighting$p_l$1 p_l$1(
-        .d(p_l$1$d),
-        .q(p_l$1$q),
-        .clock(p_l$1$clock)
+        .clock(p_l$1$clock),
+        .a(p_l$1$a),
+        .b(p_l$1$b),
+        .p(p_l$1$p)
     );
     top$lanes$1$shader$lighting$p_l$2 p_l$2(
-        .d(p_l$2$d),
-        .q(p_l$2$q),
-        .clock(p_l$2$clock)
+        .clock(p_l$2$clock),
+        .a(p_l$2$a),
+        .b(p_l$2$b),
+        .p(p_l$2$p)
     );
     top$lanes$1$shader$lighting$p_h$0 p_h$0(
-        .d(p_h$0$d),
-        .q(p_h$0$q),
-        .clock(p_h$0$clock)
+        .clock(p_h$0$clock),
+        .a(p_h$0$a),
+        .b(p_h$0$b),
+        .p(p_h$0$p)
     );
     top$lanes$1$shader$lighting$p_h$1 p_h$1(
-        .d(p_h$1$d),
-        .q(p_h$1$q),
-        .clock(p_h$1$clock)
+        .clock(p_h$1$clock),
+        .a(p_h$1$a),
+        .b(p_h$1$b),
+        .p(p_h$1$p)
     );
     top$lanes$1$shader$lighting$p_h$2 p_h$2(
-        .d(p_h$2$d),
-        .q(p_h$2$q),
-        .clock(p_h$2$clock)
+        .clock(p_h$2$clock),
+        .a(p_h$2$a),
+        .b(p_h$2$b),
+        .p(p_h$2$p)
     );
     top$lanes$1$shader$lighting$sl_q$0 sl_q$0(
         .d(sl_q$0$d),
@@ -8307,24 +8609,28 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .clock(lit_3$clock)
     );
     top$lanes$1$shader$lighting$t_l t_l(
-        .d(t_l$d),
-        .q(t_l$q),
-        .clock(t_l$clock)
+        .clock(t_l$clock),
+        .a(t_l$a),
+        .b(t_l$b),
+        .p(t_l$p)
     );
     top$lanes$1$shader$lighting$t_h t_h(
-        .d(t_h$d),
-        .q(t_h$q),
-        .clock(t_h$clock)
+        .clock(t_h$clock),
+        .a(t_h$a),
+        .b(t_h$b),
+        .p(t_h$p)
     );
     top$lanes$1$shader$lighting$u_l u_l(
-        .d(u_l$d),
-        .q(u_l$q),
-        .clock(u_l$clock)
+        .clock(u_l$clock),
+        .a(u_l$a),
+        .b(u_l$b),
+        .p(u_l$p)
     );
     top$lanes$1$shader$lighting$u_h u_h(
-        .d(u_h$d),
-        .q(u_h$q),
-        .clock(u_h$clock)
+        .clock(u_h$clock),
+        .a(u_h$a),
+        .b(u_h$b),
+        .p(u_h$p)
     );
     top$lanes$1$shader$lighting$lit_4 lit_4(
         .d(lit_4$d),
@@ -8374,10 +8680,6 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         d_h$clock = clock;
         rn_3$clock = clock;
         lit_3$clock = clock;
-        t_l$clock = clock;
-        t_h$clock = clock;
-        u_l$clock = clock;
-        u_h$clock = clock;
         lit_4$clock = clock;
         idx_l$clock = clock;
         idx_h$clock = clock;
@@ -8395,10 +8697,6 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         d_h$d = d_h$q;
         rn_3$d = rn_3$q;
         lit_3$d = lit_3$q;
-        t_l$d = t_l$q;
-        t_h$d = t_h$q;
-        u_l$d = u_l$q;
-        u_h$d = u_h$q;
         lit_4$d = lit_4$q;
         idx_l$d = idx_l$q;
         idx_h$d = idx_h$q;
@@ -8451,33 +8749,39 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         sh_q$0$clock = clock;
         p_l$0$clock = clock;
         p_h$0$clock = clock;
+        p_l$0$a = qm$0;
+        p_h$0$a = qm$0;
         square$0$address = q_mag$0;
         ml_q$0$d = m_l$0;
         mh_q$0$d = m_h$0;
-        p_l$0$d = qm$0 * ml_q$0$q;
-        p_h$0$d = qm$0 * mh_q$0$q;
+        p_l$0$b = ml_q$0$q;
+        p_h$0$b = mh_q$0$q;
         ml_q$1$clock = clock;
         mh_q$1$clock = clock;
         sl_q$1$clock = clock;
         sh_q$1$clock = clock;
         p_l$1$clock = clock;
         p_h$1$clock = clock;
+        p_l$1$a = qm$1;
+        p_h$1$a = qm$1;
         square$1$address = q_mag$1;
         ml_q$1$d = m_l$1;
         mh_q$1$d = m_h$1;
-        p_l$1$d = qm$1 * ml_q$1$q;
-        p_h$1$d = qm$1 * mh_q$1$q;
+        p_l$1$b = ml_q$1$q;
+        p_h$1$b = mh_q$1$q;
         ml_q$2$clock = clock;
         mh_q$2$clock = clock;
         sl_q$2$clock = clock;
         sh_q$2$clock = clock;
         p_l$2$clock = clock;
         p_h$2$clock = clock;
+        p_l$2$a = qm$2;
+        p_h$2$a = qm$2;
         square$2$address = q_mag$2;
         ml_q$2$d = m_l$2;
         mh_q$2$d = m_h$2;
-        p_l$2$d = qm$2 * ml_q$2$q;
-        p_h$2$d = qm$2 * mh_q$2$q;
+        p_l$2$b = ml_q$2$q;
+        p_h$2$b = mh_q$2$q;
         sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
         sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
         sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
@@ -8486,29 +8790,29 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
         n2 = square$0$data + square$1$data + square$2$data;
         n2_q$d = n2;
-        t_pl$0 = p_l$0$q;
+        t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$q;
+            t_pl$0 = 'h0 - p_l$0$p;
         end
-        t_ph$0 = p_h$0$q;
+        t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$q;
+            t_ph$0 = 'h0 - p_h$0$p;
         end
-        t_pl$1 = p_l$1$q;
+        t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$q;
+            t_pl$1 = 'h0 - p_l$1$p;
         end
-        t_ph$1 = p_h$1$q;
+        t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$q;
+            t_ph$1 = 'h0 - p_h$1$p;
         end
-        t_pl$2 = p_l$2$q;
+        t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$q;
+            t_pl$2 = 'h0 - p_l$2$p;
         end
-        t_ph$2 = p_h$2$q;
+        t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$q;
+            t_ph$2 = 'h0 - p_h$2$p;
         end
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
@@ -8534,20 +8838,24 @@ module top$lanes$1$shader$lighting(clock,host_write,host_address,host_data,q_neg
         end
         rn_3$d = rn$q;
         lit_3$d = ~dot_l['h1f] & (dot_l != 'h0);
-        t_l$d = d_l$q[('h0)+:(16)] * rn_3$q;
-        t_h$d = d_h$q[('h0)+:(16)] * rn_3$q;
-        u_l$d = 'h0;
-        u_h$d = 'h0;
-        if (wide_dot) begin
-            u_l$d = d_l$q[('h10)+:(16)] * rn_3$q;
-            u_h$d = d_h$q[('h10)+:(16)] * rn_3$q;
-        end
+        t_l$clock = clock;
+        t_h$clock = clock;
+        u_l$clock = clock;
+        u_h$clock = clock;
+        t_l$a = d_l$q[('h0)+:(16)];
+        t_h$a = d_h$q[('h0)+:(16)];
+        u_l$a = d_l$q[('h10)+:(16)];
+        u_h$a = d_h$q[('h10)+:(16)];
+        t_l$b = rn_3$q;
+        t_h$b = rn_3$q;
+        u_l$b = rn_3$q;
+        u_h$b = rn_3$q;
         lit_4$d = lit_3$q;
-        tt_l = 64'(t_l$q);
-        tt_h = 64'(t_h$q);
+        tt_l = 64'(t_l$p);
+        tt_h = 64'(t_h$p);
         if (wide_dot) begin
-            tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
-            tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
+            tt_l = 64'(t_l$p) + (64'(u_l$p) << 'h10);
+            tt_h = 64'(t_h$p) + (64'(u_h$p) << 'h10);
         end
         i_l = 10'(((tt_l << 'ha) - tt_l + half_ulp) >> shift);
         i_h = 10'(((tt_h << 'ha) - tt_h + half_ulp) >> shift);
@@ -8915,107 +9223,215 @@ module top$lanes$1$shader$lighting$n2_q(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$lighting$n2_q
-module top$lanes$1$shader$lighting$p_h$0(d,q,clock);
+module top$lanes$1$shader$lighting$p_h$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lighting$p_h$0
-module top$lanes$1$shader$lighting$p_h$1(d,q,clock);
+module top$lanes$1$shader$lighting$p_h$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lighting$p_h$1
-module top$lanes$1$shader$lighting$p_h$2(d,q,clock);
+module top$lanes$1$shader$lighting$p_h$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lighting$p_h$2
-module top$lanes$1$shader$lighting$p_l$0(d,q,clock);
+module top$lanes$1$shader$lighting$p_l$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lighting$p_l$0
-module top$lanes$1$shader$lighting$p_l$1(d,q,clock);
+module top$lanes$1$shader$lighting$p_l$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lighting$p_l$1
-module top$lanes$1$shader$lighting$p_l$2(d,q,clock);
+module top$lanes$1$shader$lighting$p_l$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lighting$p_l$2
 module top$lanes$1$shader$lighting$pair_h(d,q,clock);
     
@@ -10479,39 +10895,75 @@ module top$lanes$1$shader$lighting$square$2(address,data);
       default: data = 16'h0;
     endcase
 endmodule // top$lanes$1$shader$lighting$square$2
-module top$lanes$1$shader$lighting$t_h(d,q,clock);
+module top$lanes$1$shader$lighting$t_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lighting$t_h
-module top$lanes$1$shader$lighting$t_l(d,q,clock);
+module top$lanes$1$shader$lighting$t_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lighting$t_l
 module top$lanes$1$shader$lighting$third_h(d,q,clock);
     
@@ -10547,39 +10999,39 @@ module top$lanes$1$shader$lighting$third_l(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$lighting$third_l
-module top$lanes$1$shader$lighting$u_h(d,q,clock);
+module top$lanes$1$shader$lighting$u_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= 'h0;
     end
-          
 endmodule // top$lanes$1$shader$lighting$u_h
-module top$lanes$1$shader$lighting$u_l(d,q,clock);
+module top$lanes$1$shader$lighting$u_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= 'h0;
     end
-          
 endmodule // top$lanes$1$shader$lighting$u_l
 module top$lanes$1$shader$lit_b(clock,a,b,y);
     
@@ -10595,18 +11047,20 @@ module top$lanes$1$shader$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$shader$lit_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$shader$lit_b$t t(
         .d(t$d),
@@ -10617,12 +11071,12 @@ module top$lanes$1$shader$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -10631,22 +11085,40 @@ module top$lanes$1$shader$lit_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_b
-module top$lanes$1$shader$lit_b$p(d,q,clock);
+module top$lanes$1$shader$lit_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lit_b$p
 module top$lanes$1$shader$lit_b$t(d,q,clock);
     
@@ -10679,18 +11151,20 @@ module top$lanes$1$shader$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$shader$lit_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$shader$lit_g$t t(
         .d(t$d),
@@ -10701,12 +11175,12 @@ module top$lanes$1$shader$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -10715,22 +11189,40 @@ module top$lanes$1$shader$lit_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_g
-module top$lanes$1$shader$lit_g$p(d,q,clock);
+module top$lanes$1$shader$lit_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lit_g$p
 module top$lanes$1$shader$lit_g$t(d,q,clock);
     
@@ -10763,18 +11255,20 @@ module top$lanes$1$shader$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$shader$lit_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$shader$lit_r$t t(
         .d(t$d),
@@ -10785,12 +11279,12 @@ module top$lanes$1$shader$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -10799,22 +11293,40 @@ module top$lanes$1$shader$lit_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$lit_r
-module top$lanes$1$shader$lit_r$p(d,q,clock);
+module top$lanes$1$shader$lit_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$lit_r$p
 module top$lanes$1$shader$lit_r$t(d,q,clock);
     
@@ -11121,18 +11633,20 @@ module top$lanes$1$shader$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$shader$mul_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$shader$mul_b$t t(
         .d(t$d),
@@ -11143,12 +11657,12 @@ module top$lanes$1$shader$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -11157,22 +11671,40 @@ module top$lanes$1$shader$mul_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_b
-module top$lanes$1$shader$mul_b$p(d,q,clock);
+module top$lanes$1$shader$mul_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$mul_b$p
 module top$lanes$1$shader$mul_b$t(d,q,clock);
     
@@ -11205,18 +11737,20 @@ module top$lanes$1$shader$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$shader$mul_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$shader$mul_g$t t(
         .d(t$d),
@@ -11227,12 +11761,12 @@ module top$lanes$1$shader$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -11241,22 +11775,40 @@ module top$lanes$1$shader$mul_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_g
-module top$lanes$1$shader$mul_g$p(d,q,clock);
+module top$lanes$1$shader$mul_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$mul_g$p
 module top$lanes$1$shader$mul_g$t(d,q,clock);
     
@@ -11289,18 +11841,20 @@ module top$lanes$1$shader$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$1$shader$mul_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$1$shader$mul_r$t t(
         .d(t$d),
@@ -11311,12 +11865,12 @@ module top$lanes$1$shader$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -11325,22 +11879,40 @@ module top$lanes$1$shader$mul_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$1$shader$mul_r
-module top$lanes$1$shader$mul_r$p(d,q,clock);
+module top$lanes$1$shader$mul_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$1$shader$mul_r$p
 module top$lanes$1$shader$mul_r$t(d,q,clock);
     
@@ -14516,24 +15088,30 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [15:0] mh_q$2$d;
     wire  [15:0] mh_q$2$q;
     reg  mh_q$2$clock;
-    reg  [31:0] p_l$0$d;
-    wire  [31:0] p_l$0$q;
     reg  p_l$0$clock;
-    reg  [31:0] p_l$1$d;
-    wire  [31:0] p_l$1$q;
+    reg  [15:0] p_l$0$a;
+    reg  [15:0] p_l$0$b;
+    wire  [31:0] p_l$0$p;
     reg  p_l$1$clock;
-    reg  [31:0] p_l$2$d;
-    wire  [31:0] p_l$2$q;
+    reg  [15:0] p_l$1$a;
+    reg  [15:0] p_l$1$b;
+    wire  [31:0] p_l$1$p;
     reg  p_l$2$clock;
-    reg  [31:0] p_h$0$d;
-    wire  [31:0] p_h$0$q;
+    reg  [15:0] p_l$2$a;
+    reg  [15:0] p_l$2$b;
+    wire  [31:0] p_l$2$p;
     reg  p_h$0$clock;
-    reg  [31:0] p_h$1$d;
-    wire  [31:0] p_h$1$q;
+    reg  [15:0] p_h$0$a;
+    reg  [15:0] p_h$0$b;
+    wire  [31:0] p_h$0$p;
     reg  p_h$1$clock;
-    reg  [31:0] p_h$2$d;
-    wire  [31:0] p_h$2$q;
+    reg  [15:0] p_h$1$a;
+    reg  [15:0] p_h$1$b;
+    wire  [31:0] p_h$1$p;
     reg  p_h$2$clock;
+    reg  [15:0] p_h$2$a;
+    reg  [15:0] p_h$2$b;
+    wire  [31:0] p_h$2$p;
     reg  sl_q$0$d;
     wire  sl_q$0$q;
     reg  sl_q$0$clock;
@@ -14582,18 +15160,22 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  lit_3$d;
     wire  lit_3$q;
     reg  lit_3$clock;
-    reg  [31:0] t_l$d;
-    wire  [31:0] t_l$q;
     reg  t_l$clock;
-    reg  [31:0] t_h$d;
-    wire  [31:0] t_h$q;
+    reg  [15:0] t_l$a;
+    reg  [15:0] t_l$b;
+    wire  [31:0] t_l$p;
     reg  t_h$clock;
-    reg  [31:0] u_l$d;
-    wire  [31:0] u_l$q;
+    reg  [15:0] t_h$a;
+    reg  [15:0] t_h$b;
+    wire  [31:0] t_h$p;
     reg  u_l$clock;
-    reg  [31:0] u_h$d;
-    wire  [31:0] u_h$q;
+    reg  [15:0] u_l$a;
+    reg  [15:0] u_l$b;
+    wire  [31:0] u_l$p;
     reg  u_h$clock;
+    reg  [15:0] u_h$a;
+    reg  [15:0] u_h$b;
+    wire  [31:0] u_h$p;
     reg  lit_4$d;
     wire  lit_4$q;
     reg  lit_4$clock;
@@ -14712,34 +15294,40 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .clock(mh_q$2$clock)
     );
     top$lanes$2$shader$lighting$p_l$0 p_l$0(
-        .d(p_l$0$d),
-        .q(p_l$0$q),
-        .clock(p_l$0$clock)
+        .clock(p_l$0$clock),
+        .a(p_l$0$a),
+        .b(p_l$0$b),
+        .p(p_l$0$p)
     );
     top$lanes$2$shader$lighting$p_l$1 p_l$1(
-        .d(p_l$1$d),
-        .q(p_l$1$q),
-        .clock(p_l$1$clock)
+        .clock(p_l$1$clock),
+        .a(p_l$1$a),
+        .b(p_l$1$b),
+        .p(p_l$1$p)
     );
     top$lanes$2$shader$lighting$p_l$2 p_l$2(
-        .d(p_l$2$d),
-        .q(p_l$2$q),
-        .clock(p_l$2$clock)
+        .clock(p_l$2$clock),
+        .a(p_l$2$a),
+        .b(p_l$2$b),
+        .p(p_l$2$p)
     );
     top$lanes$2$shader$lighting$p_h$0 p_h$0(
-        .d(p_h$0$d),
-        .q(p_h$0$q),
-        .clock(p_h$0$clock)
+        .clock(p_h$0$clock),
+        .a(p_h$0$a),
+        .b(p_h$0$b),
+        .p(p_h$0$p)
     );
     top$lanes$2$shader$lighting$p_h$1 p_h$1(
-        .d(p_h$1$d),
-        .q(p_h$1$q),
-        .clock(p_h$1$clock)
+        .clock(p_h$1$clock),
+        .a(p_h$1$a),
+        .b(p_h$1$b),
+        .p(p_h$1$p)
     );
     top$lanes$2$shader$lighting$p_h$2 p_h$2(
-        .d(p_h$2$d),
-        .q(p_h$2$q),
-        .clock(p_h$2$clock)
+        .clock(p_h$2$clock),
+        .a(p_h$2$a),
+        .b(p_h$2$b),
+        .p(p_h$2$p)
     );
     top$lanes$2$shader$lighting$sl_q$0 sl_q$0(
         .d(sl_q$0$d),
@@ -14822,24 +15410,28 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .clock(lit_3$clock)
     );
     top$lanes$2$shader$lighting$t_l t_l(
-        .d(t_l$d),
-        .q(t_l$q),
-        .clock(t_l$clock)
+        .clock(t_l$clock),
+        .a(t_l$a),
+        .b(t_l$b),
+        .p(t_l$p)
     );
     top$lanes$2$shader$lighting$t_h t_h(
-        .d(t_h$d),
-        .q(t_h$q),
-        .clock(t_h$clock)
+        .clock(t_h$clock),
+        .a(t_h$a),
+        .b(t_h$b),
+        .p(t_h$p)
     );
     top$lanes$2$shader$lighting$u_l u_l(
-        .d(u_l$d),
-        .q(u_l$q),
-        .clock(u_l$clock)
+        .clock(u_l$clock),
+        .a(u_l$a),
+        .b(u_l$b),
+        .p(u_l$p)
     );
     top$lanes$2$shader$lighting$u_h u_h(
-        .d(u_h$d),
-        .q(u_h$q),
-        .clock(u_h$clock)
+        .clock(u_h$clock),
+        .a(u_h$a),
+        .b(u_h$b),
+        .p(u_h$p)
     );
     top$lanes$2$shader$lighting$lit_4 lit_4(
         .d(lit_4$d),
@@ -14889,10 +15481,6 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         d_h$clock = clock;
         rn_3$clock = clock;
         lit_3$clock = clock;
-        t_l$clock = clock;
-        t_h$clock = clock;
-        u_l$clock = clock;
-        u_h$clock = clock;
         lit_4$clock = clock;
         idx_l$clock = clock;
         idx_h$clock = clock;
@@ -14910,10 +15498,6 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         d_h$d = d_h$q;
         rn_3$d = rn_3$q;
         lit_3$d = lit_3$q;
-        t_l$d = t_l$q;
-        t_h$d = t_h$q;
-        u_l$d = u_l$q;
-        u_h$d = u_h$q;
         lit_4$d = lit_4$q;
         idx_l$d = idx_l$q;
         idx_h$d = idx_h$q;
@@ -14966,33 +15550,39 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         sh_q$0$clock = clock;
         p_l$0$clock = clock;
         p_h$0$clock = clock;
+        p_l$0$a = qm$0;
+        p_h$0$a = qm$0;
         square$0$address = q_mag$0;
         ml_q$0$d = m_l$0;
         mh_q$0$d = m_h$0;
-        p_l$0$d = qm$0 * ml_q$0$q;
-        p_h$0$d = qm$0 * mh_q$0$q;
+        p_l$0$b = ml_q$0$q;
+        p_h$0$b = mh_q$0$q;
         ml_q$1$clock = clock;
         mh_q$1$clock = clock;
         sl_q$1$clock = clock;
         sh_q$1$clock = clock;
         p_l$1$clock = clock;
         p_h$1$clock = clock;
+        p_l$1$a = qm$1;
+        p_h$1$a = qm$1;
         square$1$address = q_mag$1;
         ml_q$1$d = m_l$1;
         mh_q$1$d = m_h$1;
-        p_l$1$d = qm$1 * ml_q$1$q;
-        p_h$1$d = qm$1 * mh_q$1$q;
+        p_l$1$b = ml_q$1$q;
+        p_h$1$b = mh_q$1$q;
         ml_q$2$clock = clock;
         mh_q$2$clock = clock;
         sl_q$2$clock = clock;
         sh_q$2$clock = clock;
         p_l$2$clock = clock;
         p_h$2$clock = clock;
+        p_l$2$a = qm$2;
+        p_h$2$a = qm$2;
         square$2$address = q_mag$2;
         ml_q$2$d = m_l$2;
         mh_q$2$d = m_h$2;
-        p_l$2$d = qm$2 * ml_q$2$q;
-        p_h$2$d = qm$2 * mh_q$2$q;
+        p_l$2$b = ml_q$2$q;
+        p_h$2$b = mh_q$2$q;
         sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
         sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
         sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
@@ -15001,29 +15591,29 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
         n2 = square$0$data + square$1$data + square$2$data;
         n2_q$d = n2;
-        t_pl$0 = p_l$0$q;
+        t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$q;
+            t_pl$0 = 'h0 - p_l$0$p;
         end
-        t_ph$0 = p_h$0$q;
+        t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$q;
+            t_ph$0 = 'h0 - p_h$0$p;
         end
-        t_pl$1 = p_l$1$q;
+        t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$q;
+            t_pl$1 = 'h0 - p_l$1$p;
         end
-        t_ph$1 = p_h$1$q;
+        t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$q;
+            t_ph$1 = 'h0 - p_h$1$p;
         end
-        t_pl$2 = p_l$2$q;
+        t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$q;
+            t_pl$2 = 'h0 - p_l$2$p;
         end
-        t_ph$2 = p_h$2$q;
+        t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$q;
+            t_ph$2 = 'h0 - p_h$2$p;
         end
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
@@ -15049,20 +15639,24 @@ module top$lanes$2$shader$lighting(clock,host_write,host_address,host_data,q_neg
         end
         rn_3$d = rn$q;
         lit_3$d = ~dot_l['h1f] & (dot_l != 'h0);
-        t_l$d = d_l$q[('h0)+:(16)] * rn_3$q;
-        t_h$d = d_h$q[('h0)+:(16)] * rn_3$q;
-        u_l$d = 'h0;
-        u_h$d = 'h0;
-        if (wide_dot) begin
-            u_l$d = d_l$q[('h10)+:(16)] * rn_3$q;
-            u_h$d = d_h$q[('h10)+:(16)] * rn_3$q;
-        end
+        t_l$clock = clock;
+        t_h$clock = clock;
+        u_l$clock = clock;
+        u_h$clock = clock;
+        t_l$a = d_l$q[('h0)+:(16)];
+        t_h$a = d_h$q[('h0)+:(16)];
+        u_l$a = d_l$q[('h10)+:(16)];
+        u_h$a = d_h$q[('h10)+:(16)];
+        t_l$b = rn_3$q;
+        t_h$b = rn_3$q;
+        u_l$b = rn_3$q;
+        u_h$b = rn_3$q;
         lit_4$d = lit_3$q;
-        tt_l = 64'(t_l$q);
-        tt_h = 64'(t_h$q);
+        tt_l = 64'(t_l$p);
+        tt_h = 64'(t_h$p);
         if (wide_dot) begin
-            tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
-            tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
+            tt_l = 64'(t_l$p) + (64'(u_l$p) << 'h10);
+            tt_h = 64'(t_h$p) + (64'(u_h$p) << 'h10);
         end
         i_l = 10'(((tt_l << 'ha) - tt_l + half_ulp) >> shift);
         i_h = 10'(((tt_h << 'ha) - tt_h + half_ulp) >> shift);
@@ -15430,107 +16024,215 @@ module top$lanes$2$shader$lighting$n2_q(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$lighting$n2_q
-module top$lanes$2$shader$lighting$p_h$0(d,q,clock);
+module top$lanes$2$shader$lighting$p_h$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$lighting$p_h$0
-module top$lanes$2$shader$lighting$p_h$1(d,q,clock);
+module top$lanes$2$shader$lighting$p_h$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$lighting$p_h$1
-module top$lanes$2$shader$lighting$p_h$2(d,q,clock);
+module top$lanes$2$shader$lighting$p_h$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$lighting$p_h$2
-module top$lanes$2$shader$lighting$p_l$0(d,q,clock);
+module top$lanes$2$shader$lighting$p_l$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$lighting$p_l$0
-module top$lanes$2$shader$lighting$p_l$1(d,q,clock);
+module top$lanes$2$shader$lighting$p_l$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$lighting$p_l$1
-module top$lanes$2$shader$lighting$p_l$2(d,q,clock);
+module top$lanes$2$shader$lighting$p_l$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$lighting$p_l$2
 module top$lanes$2$shader$lighting$pair_h(d,q,clock);
     
@@ -16994,39 +17696,75 @@ module top$lanes$2$shader$lighting$square$2(address,data);
       default: data = 16'h0;
     endcase
 endmodule // top$lanes$2$shader$lighting$square$2
-module top$lanes$2$shader$lighting$t_h(d,q,clock);
+module top$lanes$2$shader$lighting$t_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$lighting$t_h
-module top$lanes$2$shader$lighting$t_l(d,q,clock);
+module top$lanes$2$shader$lighting$t_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$lighting$t_l
 module top$lanes$2$shader$lighting$third_h(d,q,clock);
     
@@ -17062,39 +17800,39 @@ module top$lanes$2$shader$lighting$third_l(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$lighting$third_l
-module top$lanes$2$shader$lighting$u_h(d,q,clock);
+module top$lanes$2$shader$lighting$u_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= 'h0;
     end
-          
 endmodule // top$lanes$2$shader$lighting$u_h
-module top$lanes$2$shader$lighting$u_l(d,q,clock);
+module top$lanes$2$shader$lighting$u_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= 'h0;
     end
-          
 endmodule // top$lanes$2$shader$lighting$u_l
 module top$lanes$2$shader$lit_b(clock,a,b,y);
     
@@ -17110,18 +17848,20 @@ module top$lanes$2$shader$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$2$shader$lit_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$2$shader$lit_b$t t(
         .d(t$d),
@@ -17132,12 +17872,12 @@ module top$lanes$2$shader$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -17146,22 +17886,40 @@ module top$lanes$2$shader$lit_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$2$shader$lit_b
-module top$lanes$2$shader$lit_b$p(d,q,clock);
+module top$lanes$2$shader$lit_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$lit_b$p
 module top$lanes$2$shader$lit_b$t(d,q,clock);
     
@@ -17194,18 +17952,20 @@ module top$lanes$2$shader$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$2$shader$lit_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$2$shader$lit_g$t t(
         .d(t$d),
@@ -17216,12 +17976,12 @@ module top$lanes$2$shader$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -17230,22 +17990,40 @@ module top$lanes$2$shader$lit_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$2$shader$lit_g
-module top$lanes$2$shader$lit_g$p(d,q,clock);
+module top$lanes$2$shader$lit_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$lit_g$p
 module top$lanes$2$shader$lit_g$t(d,q,clock);
     
@@ -17278,18 +18056,20 @@ module top$lanes$2$shader$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$2$shader$lit_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$2$shader$lit_r$t t(
         .d(t$d),
@@ -17300,12 +18080,12 @@ module top$lanes$2$shader$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -17314,22 +18094,40 @@ module top$lanes$2$shader$lit_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$2$shader$lit_r
-module top$lanes$2$shader$lit_r$p(d,q,clock);
+module top$lanes$2$shader$lit_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$lit_r$p
 module top$lanes$2$shader$lit_r$t(d,q,clock);
     
@@ -17636,18 +18434,20 @@ module top$lanes$2$shader$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$2$shader$mul_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$2$shader$mul_b$t t(
         .d(t$d),
@@ -17658,12 +18458,12 @@ module top$lanes$2$shader$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -17672,22 +18472,40 @@ module top$lanes$2$shader$mul_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$2$shader$mul_b
-module top$lanes$2$shader$mul_b$p(d,q,clock);
+module top$lanes$2$shader$mul_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$mul_b$p
 module top$lanes$2$shader$mul_b$t(d,q,clock);
     
@@ -17720,18 +18538,20 @@ module top$lanes$2$shader$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$2$shader$mul_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$2$shader$mul_g$t t(
         .d(t$d),
@@ -17742,12 +18562,12 @@ module top$lanes$2$shader$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -17756,22 +18576,40 @@ module top$lanes$2$shader$mul_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$2$shader$mul_g
-module top$lanes$2$shader$mul_g$p(d,q,clock);
+module top$lanes$2$shader$mul_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$mul_g$p
 module top$lanes$2$shader$mul_g$t(d,q,clock);
     
@@ -17804,18 +18642,20 @@ module top$lanes$2$shader$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$2$shader$mul_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$2$shader$mul_r$t t(
         .d(t$d),
@@ -17826,12 +18666,12 @@ module top$lanes$2$shader$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -17840,22 +18680,40 @@ module top$lanes$2$shader$mul_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$2$shader$mul_r
-module top$lanes$2$shader$mul_r$p(d,q,clock);
+module top$lanes$2$shader$mul_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$2$shader$mul_r$p
 module top$lanes$2$shader$mul_r$t(d,q,clock);
     
@@ -21031,24 +21889,30 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  [15:0] mh_q$2$d;
     wire  [15:0] mh_q$2$q;
     reg  mh_q$2$clock;
-    reg  [31:0] p_l$0$d;
-    wire  [31:0] p_l$0$q;
     reg  p_l$0$clock;
-    reg  [31:0] p_l$1$d;
-    wire  [31:0] p_l$1$q;
+    reg  [15:0] p_l$0$a;
+    reg  [15:0] p_l$0$b;
+    wire  [31:0] p_l$0$p;
     reg  p_l$1$clock;
-    reg  [31:0] p_l$2$d;
-    wire  [31:0] p_l$2$q;
+    reg  [15:0] p_l$1$a;
+    reg  [15:0] p_l$1$b;
+    wire  [31:0] p_l$1$p;
     reg  p_l$2$clock;
-    reg  [31:0] p_h$0$d;
-    wire  [31:0] p_h$0$q;
+    reg  [15:0] p_l$2$a;
+    reg  [15:0] p_l$2$b;
+    wire  [31:0] p_l$2$p;
     reg  p_h$0$clock;
-    reg  [31:0] p_h$1$d;
-    wire  [31:0] p_h$1$q;
+    reg  [15:0] p_h$0$a;
+    reg  [15:0] p_h$0$b;
+    wire  [31:0] p_h$0$p;
     reg  p_h$1$clock;
-    reg  [31:0] p_h$2$d;
-    wire  [31:0] p_h$2$q;
+    reg  [15:0] p_h$1$a;
+    reg  [15:0] p_h$1$b;
+    wire  [31:0] p_h$1$p;
     reg  p_h$2$clock;
+    reg  [15:0] p_h$2$a;
+    reg  [15:0] p_h$2$b;
+    wire  [31:0] p_h$2$p;
     reg  sl_q$0$d;
     wire  sl_q$0$q;
     reg  sl_q$0$clock;
@@ -21097,18 +21961,22 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
     reg  lit_3$d;
     wire  lit_3$q;
     reg  lit_3$clock;
-    reg  [31:0] t_l$d;
-    wire  [31:0] t_l$q;
     reg  t_l$clock;
-    reg  [31:0] t_h$d;
-    wire  [31:0] t_h$q;
+    reg  [15:0] t_l$a;
+    reg  [15:0] t_l$b;
+    wire  [31:0] t_l$p;
     reg  t_h$clock;
-    reg  [31:0] u_l$d;
-    wire  [31:0] u_l$q;
+    reg  [15:0] t_h$a;
+    reg  [15:0] t_h$b;
+    wire  [31:0] t_h$p;
     reg  u_l$clock;
-    reg  [31:0] u_h$d;
-    wire  [31:0] u_h$q;
+    reg  [15:0] u_l$a;
+    reg  [15:0] u_l$b;
+    wire  [31:0] u_l$p;
     reg  u_h$clock;
+    reg  [15:0] u_h$a;
+    reg  [15:0] u_h$b;
+    wire  [31:0] u_h$p;
     reg  lit_4$d;
     wire  lit_4$q;
     reg  lit_4$clock;
@@ -21227,34 +22095,40 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .clock(mh_q$2$clock)
     );
     top$lanes$3$shader$lighting$p_l$0 p_l$0(
-        .d(p_l$0$d),
-        .q(p_l$0$q),
-        .clock(p_l$0$clock)
+        .clock(p_l$0$clock),
+        .a(p_l$0$a),
+        .b(p_l$0$b),
+        .p(p_l$0$p)
     );
     top$lanes$3$shader$lighting$p_l$1 p_l$1(
-        .d(p_l$1$d),
-        .q(p_l$1$q),
-        .clock(p_l$1$clock)
+        .clock(p_l$1$clock),
+        .a(p_l$1$a),
+        .b(p_l$1$b),
+        .p(p_l$1$p)
     );
     top$lanes$3$shader$lighting$p_l$2 p_l$2(
-        .d(p_l$2$d),
-        .q(p_l$2$q),
-        .clock(p_l$2$clock)
+        .clock(p_l$2$clock),
+        .a(p_l$2$a),
+        .b(p_l$2$b),
+        .p(p_l$2$p)
     );
     top$lanes$3$shader$lighting$p_h$0 p_h$0(
-        .d(p_h$0$d),
-        .q(p_h$0$q),
-        .clock(p_h$0$clock)
+        .clock(p_h$0$clock),
+        .a(p_h$0$a),
+        .b(p_h$0$b),
+        .p(p_h$0$p)
     );
     top$lanes$3$shader$lighting$p_h$1 p_h$1(
-        .d(p_h$1$d),
-        .q(p_h$1$q),
-        .clock(p_h$1$clock)
+        .clock(p_h$1$clock),
+        .a(p_h$1$a),
+        .b(p_h$1$b),
+        .p(p_h$1$p)
     );
     top$lanes$3$shader$lighting$p_h$2 p_h$2(
-        .d(p_h$2$d),
-        .q(p_h$2$q),
-        .clock(p_h$2$clock)
+        .clock(p_h$2$clock),
+        .a(p_h$2$a),
+        .b(p_h$2$b),
+        .p(p_h$2$p)
     );
     top$lanes$3$shader$lighting$sl_q$0 sl_q$0(
         .d(sl_q$0$d),
@@ -21337,24 +22211,28 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         .clock(lit_3$clock)
     );
     top$lanes$3$shader$lighting$t_l t_l(
-        .d(t_l$d),
-        .q(t_l$q),
-        .clock(t_l$clock)
+        .clock(t_l$clock),
+        .a(t_l$a),
+        .b(t_l$b),
+        .p(t_l$p)
     );
     top$lanes$3$shader$lighting$t_h t_h(
-        .d(t_h$d),
-        .q(t_h$q),
-        .clock(t_h$clock)
+        .clock(t_h$clock),
+        .a(t_h$a),
+        .b(t_h$b),
+        .p(t_h$p)
     );
     top$lanes$3$shader$lighting$u_l u_l(
-        .d(u_l$d),
-        .q(u_l$q),
-        .clock(u_l$clock)
+        .clock(u_l$clock),
+        .a(u_l$a),
+        .b(u_l$b),
+        .p(u_l$p)
     );
     top$lanes$3$shader$lighting$u_h u_h(
-        .d(u_h$d),
-        .q(u_h$q),
-        .clock(u_h$clock)
+        .clock(u_h$clock),
+        .a(u_h$a),
+        .b(u_h$b),
+        .p(u_h$p)
     );
     top$lanes$3$shader$lighting$lit_4 lit_4(
         .d(lit_4$d),
@@ -21404,10 +22282,6 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         d_h$clock = clock;
         rn_3$clock = clock;
         lit_3$clock = clock;
-        t_l$clock = clock;
-        t_h$clock = clock;
-        u_l$clock = clock;
-        u_h$clock = clock;
         lit_4$clock = clock;
         idx_l$clock = clock;
         idx_h$clock = clock;
@@ -21425,10 +22299,6 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         d_h$d = d_h$q;
         rn_3$d = rn_3$q;
         lit_3$d = lit_3$q;
-        t_l$d = t_l$q;
-        t_h$d = t_h$q;
-        u_l$d = u_l$q;
-        u_h$d = u_h$q;
         lit_4$d = lit_4$q;
         idx_l$d = idx_l$q;
         idx_h$d = idx_h$q;
@@ -21481,33 +22351,39 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         sh_q$0$clock = clock;
         p_l$0$clock = clock;
         p_h$0$clock = clock;
+        p_l$0$a = qm$0;
+        p_h$0$a = qm$0;
         square$0$address = q_mag$0;
         ml_q$0$d = m_l$0;
         mh_q$0$d = m_h$0;
-        p_l$0$d = qm$0 * ml_q$0$q;
-        p_h$0$d = qm$0 * mh_q$0$q;
+        p_l$0$b = ml_q$0$q;
+        p_h$0$b = mh_q$0$q;
         ml_q$1$clock = clock;
         mh_q$1$clock = clock;
         sl_q$1$clock = clock;
         sh_q$1$clock = clock;
         p_l$1$clock = clock;
         p_h$1$clock = clock;
+        p_l$1$a = qm$1;
+        p_h$1$a = qm$1;
         square$1$address = q_mag$1;
         ml_q$1$d = m_l$1;
         mh_q$1$d = m_h$1;
-        p_l$1$d = qm$1 * ml_q$1$q;
-        p_h$1$d = qm$1 * mh_q$1$q;
+        p_l$1$b = ml_q$1$q;
+        p_h$1$b = mh_q$1$q;
         ml_q$2$clock = clock;
         mh_q$2$clock = clock;
         sl_q$2$clock = clock;
         sh_q$2$clock = clock;
         p_l$2$clock = clock;
         p_h$2$clock = clock;
+        p_l$2$a = qm$2;
+        p_h$2$a = qm$2;
         square$2$address = q_mag$2;
         ml_q$2$d = m_l$2;
         mh_q$2$d = m_h$2;
-        p_l$2$d = qm$2 * ml_q$2$q;
-        p_h$2$d = qm$2 * mh_q$2$q;
+        p_l$2$b = ml_q$2$q;
+        p_h$2$b = mh_q$2$q;
         sl_q$0$d = q_neg$0 ^ regs$q$0['hf];
         sl_q$1$d = q_neg$1 ^ regs$q$0['h1f];
         sl_q$2$d = q_neg$2 ^ regs$q$0['h2f];
@@ -21516,29 +22392,29 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         sh_q$2$d = q_neg$2 ^ regs$q$1['h2f];
         n2 = square$0$data + square$1$data + square$2$data;
         n2_q$d = n2;
-        t_pl$0 = p_l$0$q;
+        t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$q;
+            t_pl$0 = 'h0 - p_l$0$p;
         end
-        t_ph$0 = p_h$0$q;
+        t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$q;
+            t_ph$0 = 'h0 - p_h$0$p;
         end
-        t_pl$1 = p_l$1$q;
+        t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$q;
+            t_pl$1 = 'h0 - p_l$1$p;
         end
-        t_ph$1 = p_h$1$q;
+        t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$q;
+            t_ph$1 = 'h0 - p_h$1$p;
         end
-        t_pl$2 = p_l$2$q;
+        t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$q;
+            t_pl$2 = 'h0 - p_l$2$p;
         end
-        t_ph$2 = p_h$2$q;
+        t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$q;
+            t_ph$2 = 'h0 - p_h$2$p;
         end
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
@@ -21564,20 +22440,24 @@ module top$lanes$3$shader$lighting(clock,host_write,host_address,host_data,q_neg
         end
         rn_3$d = rn$q;
         lit_3$d = ~dot_l['h1f] & (dot_l != 'h0);
-        t_l$d = d_l$q[('h0)+:(16)] * rn_3$q;
-        t_h$d = d_h$q[('h0)+:(16)] * rn_3$q;
-        u_l$d = 'h0;
-        u_h$d = 'h0;
-        if (wide_dot) begin
-            u_l$d = d_l$q[('h10)+:(16)] * rn_3$q;
-            u_h$d = d_h$q[('h10)+:(16)] * rn_3$q;
-        end
+        t_l$clock = clock;
+        t_h$clock = clock;
+        u_l$clock = clock;
+        u_h$clock = clock;
+        t_l$a = d_l$q[('h0)+:(16)];
+        t_h$a = d_h$q[('h0)+:(16)];
+        u_l$a = d_l$q[('h10)+:(16)];
+        u_h$a = d_h$q[('h10)+:(16)];
+        t_l$b = rn_3$q;
+        t_h$b = rn_3$q;
+        u_l$b = rn_3$q;
+        u_h$b = rn_3$q;
         lit_4$d = lit_3$q;
-        tt_l = 64'(t_l$q);
-        tt_h = 64'(t_h$q);
+        tt_l = 64'(t_l$p);
+        tt_h = 64'(t_h$p);
         if (wide_dot) begin
-            tt_l = 64'(t_l$q) + (64'(u_l$q) << 'h10);
-            tt_h = 64'(t_h$q) + (64'(u_h$q) << 'h10);
+            tt_l = 64'(t_l$p) + (64'(u_l$p) << 'h10);
+            tt_h = 64'(t_h$p) + (64'(u_h$p) << 'h10);
         end
         i_l = 10'(((tt_l << 'ha) - tt_l + half_ulp) >> shift);
         i_h = 10'(((tt_h << 'ha) - tt_h + half_ulp) >> shift);
@@ -21945,107 +22825,215 @@ module top$lanes$3$shader$lighting$n2_q(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$lighting$n2_q
-module top$lanes$3$shader$lighting$p_h$0(d,q,clock);
+module top$lanes$3$shader$lighting$p_h$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$lighting$p_h$0
-module top$lanes$3$shader$lighting$p_h$1(d,q,clock);
+module top$lanes$3$shader$lighting$p_h$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$lighting$p_h$1
-module top$lanes$3$shader$lighting$p_h$2(d,q,clock);
+module top$lanes$3$shader$lighting$p_h$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$lighting$p_h$2
-module top$lanes$3$shader$lighting$p_l$0(d,q,clock);
+module top$lanes$3$shader$lighting$p_l$0(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$lighting$p_l$0
-module top$lanes$3$shader$lighting$p_l$1(d,q,clock);
+module top$lanes$3$shader$lighting$p_l$1(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$lighting$p_l$1
-module top$lanes$3$shader$lighting$p_l$2(d,q,clock);
+module top$lanes$3$shader$lighting$p_l$2(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$lighting$p_l$2
 module top$lanes$3$shader$lighting$pair_h(d,q,clock);
     
@@ -23509,39 +24497,75 @@ module top$lanes$3$shader$lighting$square$2(address,data);
       default: data = 16'h0;
     endcase
 endmodule // top$lanes$3$shader$lighting$square$2
-module top$lanes$3$shader$lighting$t_h(d,q,clock);
+module top$lanes$3$shader$lighting$t_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$lighting$t_h
-module top$lanes$3$shader$lighting$t_l(d,q,clock);
+module top$lanes$3$shader$lighting$t_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$lighting$t_l
 module top$lanes$3$shader$lighting$third_h(d,q,clock);
     
@@ -23577,39 +24601,39 @@ module top$lanes$3$shader$lighting$third_l(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$lighting$third_l
-module top$lanes$3$shader$lighting$u_h(d,q,clock);
+module top$lanes$3$shader$lighting$u_h(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= 'h0;
     end
-          
 endmodule // top$lanes$3$shader$lighting$u_h
-module top$lanes$3$shader$lighting$u_l(d,q,clock);
+module top$lanes$3$shader$lighting$u_l(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= 'h0;
     end
-          
 endmodule // top$lanes$3$shader$lighting$u_l
 module top$lanes$3$shader$lit_b(clock,a,b,y);
     
@@ -23625,18 +24649,20 @@ module top$lanes$3$shader$lit_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$3$shader$lit_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$3$shader$lit_b$t t(
         .d(t$d),
@@ -23647,12 +24673,12 @@ module top$lanes$3$shader$lit_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -23661,22 +24687,40 @@ module top$lanes$3$shader$lit_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$3$shader$lit_b
-module top$lanes$3$shader$lit_b$p(d,q,clock);
+module top$lanes$3$shader$lit_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$lit_b$p
 module top$lanes$3$shader$lit_b$t(d,q,clock);
     
@@ -23709,18 +24753,20 @@ module top$lanes$3$shader$lit_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$3$shader$lit_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$3$shader$lit_g$t t(
         .d(t$d),
@@ -23731,12 +24777,12 @@ module top$lanes$3$shader$lit_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -23745,22 +24791,40 @@ module top$lanes$3$shader$lit_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$3$shader$lit_g
-module top$lanes$3$shader$lit_g$p(d,q,clock);
+module top$lanes$3$shader$lit_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$lit_g$p
 module top$lanes$3$shader$lit_g$t(d,q,clock);
     
@@ -23793,18 +24857,20 @@ module top$lanes$3$shader$lit_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$3$shader$lit_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$3$shader$lit_r$t t(
         .d(t$d),
@@ -23815,12 +24881,12 @@ module top$lanes$3$shader$lit_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -23829,22 +24895,40 @@ module top$lanes$3$shader$lit_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$3$shader$lit_r
-module top$lanes$3$shader$lit_r$p(d,q,clock);
+module top$lanes$3$shader$lit_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$lit_r$p
 module top$lanes$3$shader$lit_r$t(d,q,clock);
     
@@ -24151,18 +25235,20 @@ module top$lanes$3$shader$mul_b(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$3$shader$mul_b$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$3$shader$mul_b$t t(
         .d(t$d),
@@ -24173,12 +25259,12 @@ module top$lanes$3$shader$mul_b(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -24187,22 +25273,40 @@ module top$lanes$3$shader$mul_b(clock,a,b,y);
     end
     
 endmodule // top$lanes$3$shader$mul_b
-module top$lanes$3$shader$mul_b$p(d,q,clock);
+module top$lanes$3$shader$mul_b$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$mul_b$p
 module top$lanes$3$shader$mul_b$t(d,q,clock);
     
@@ -24235,18 +25339,20 @@ module top$lanes$3$shader$mul_g(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$3$shader$mul_g$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$3$shader$mul_g$t t(
         .d(t$d),
@@ -24257,12 +25363,12 @@ module top$lanes$3$shader$mul_g(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -24271,22 +25377,40 @@ module top$lanes$3$shader$mul_g(clock,a,b,y);
     end
     
 endmodule // top$lanes$3$shader$mul_g
-module top$lanes$3$shader$mul_g$p(d,q,clock);
+module top$lanes$3$shader$mul_g$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$mul_g$p
 module top$lanes$3$shader$mul_g$t(d,q,clock);
     
@@ -24319,18 +25443,20 @@ module top$lanes$3$shader$mul_r(clock,a,b,y);
     localparam  enabled = 1'b1;
     
     // Stub signals
-    reg  [31:0] p$d;
-    wire  [31:0] p$q;
     reg  p$clock;
+    reg  [15:0] p$a;
+    reg  [15:0] p$b;
+    wire  [31:0] p$p;
     reg  [31:0] t$d;
     wire  [31:0] t$q;
     reg  t$clock;
     
     // Sub module instances
     top$lanes$3$shader$mul_r$p p(
-        .d(p$d),
-        .q(p$q),
-        .clock(p$clock)
+        .clock(p$clock),
+        .a(p$a),
+        .b(p$b),
+        .p(p$p)
     );
     top$lanes$3$shader$mul_r$t t(
         .d(t$d),
@@ -24341,12 +25467,12 @@ module top$lanes$3$shader$mul_r(clock,a,b,y);
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
-        p$clock = clock;
         t$clock = clock;
-        p$d = p$q;
         t$d = t$q;
-        p$d = a * b;
-        t$d = p$q + half;
+        p$clock = clock;
+        p$a = a;
+        p$b = b;
+        t$d = p$p + half;
         y_pass = 16'((t$q + (t$q >> shift)) >> shift);
         if (~enabled) begin
             y_pass = 'h0;
@@ -24355,22 +25481,40 @@ module top$lanes$3$shader$mul_r(clock,a,b,y);
     end
     
 endmodule // top$lanes$3$shader$mul_r
-module top$lanes$3$shader$mul_r$p(d,q,clock);
+module top$lanes$3$shader$mul_r$p(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$lanes$3$shader$mul_r$p
 module top$lanes$3$shader$mul_r$t(d,q,clock);
     

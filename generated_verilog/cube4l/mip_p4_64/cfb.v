@@ -1378,15 +1378,18 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] m_u$d;
     wire  [31:0] m_u$q;
     reg  m_u$clock;
-    reg  [31:0] m_v$d;
-    wire  [31:0] m_v$q;
     reg  m_v$clock;
-    reg  [31:0] m_w_lo$d;
-    wire  [31:0] m_w_lo$q;
+    reg  [15:0] m_v$a;
+    reg  [15:0] m_v$b;
+    wire  [31:0] m_v$p;
     reg  m_w_lo$clock;
-    reg  [31:0] m_w_hi$d;
-    wire  [31:0] m_w_hi$q;
+    reg  [15:0] m_w_lo$a;
+    reg  [15:0] m_w_lo$b;
+    wire  [31:0] m_w_lo$p;
     reg  m_w_hi$clock;
+    reg  [15:0] m_w_hi$a;
+    reg  [15:0] m_w_hi$b;
+    wire  [31:0] m_w_hi$p;
     reg  m_pad$d;
     wire  m_pad$q;
     reg  m_pad$clock;
@@ -1663,19 +1666,22 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .clock(m_u$clock)
     );
     top$cfb$lanes$0$m_v m_v(
-        .d(m_v$d),
-        .q(m_v$q),
-        .clock(m_v$clock)
+        .clock(m_v$clock),
+        .a(m_v$a),
+        .b(m_v$b),
+        .p(m_v$p)
     );
     top$cfb$lanes$0$m_w_lo m_w_lo(
-        .d(m_w_lo$d),
-        .q(m_w_lo$q),
-        .clock(m_w_lo$clock)
+        .clock(m_w_lo$clock),
+        .a(m_w_lo$a),
+        .b(m_w_lo$b),
+        .p(m_w_lo$p)
     );
     top$cfb$lanes$0$m_w_hi m_w_hi(
-        .d(m_w_hi$d),
-        .q(m_w_hi$q),
-        .clock(m_w_hi$clock)
+        .clock(m_w_hi$clock),
+        .a(m_w_hi$a),
+        .b(m_w_hi$b),
+        .p(m_w_hi$p)
     );
     top$cfb$lanes$0$m_pad m_pad(
         .d(m_pad$d),
@@ -1836,9 +1842,6 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         a_w$clock = clock;
         a_pad$clock = clock;
         m_u$clock = clock;
-        m_v$clock = clock;
-        m_w_lo$clock = clock;
-        m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
         xc_r$clock = clock;
@@ -1897,9 +1900,6 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         a_w$d = a_w$q;
         a_pad$d = a_pad$q;
         m_u$d = m_u$q;
-        m_v$d = m_v$q;
-        m_w_lo$d = m_w_lo$q;
-        m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
         xc_r$d = xc_r$q;
@@ -1994,11 +1994,17 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u$q;
-        m_w_lo$d = a_w$q * slab_lo$q;
-        m_w_hi$d = a_w$q * slab_hi$q;
+        m_v$clock = clock;
+        m_w_lo$clock = clock;
+        m_w_hi$clock = clock;
+        m_v$a = a_v$q;
+        m_v$b = b_u$q;
+        m_w_lo$a = a_w$q;
+        m_w_lo$b = slab_lo$q;
+        m_w_hi$a = a_w$q;
+        m_w_hi$b = slab_hi$q;
         m_pad$d = a_pad$q;
-        addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
+        addr$d = m_u$q + m_v$p + m_w_lo$p + (m_w_hi$p << 'h10);
         if (m_pad$q) begin
             addr$d = 'h0;
         end
@@ -2625,56 +2631,110 @@ module top$cfb$lanes$0$m_u(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$0$m_u
-module top$cfb$lanes$0$m_v(d,q,clock);
+module top$cfb$lanes$0$m_v(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$cfb$lanes$0$m_v
-module top$cfb$lanes$0$m_w_hi(d,q,clock);
+module top$cfb$lanes$0$m_w_hi(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$cfb$lanes$0$m_w_hi
-module top$cfb$lanes$0$m_w_lo(d,q,clock);
+module top$cfb$lanes$0$m_w_lo(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$cfb$lanes$0$m_w_lo
 module top$cfb$lanes$0$memory(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -3535,15 +3595,18 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] m_u$d;
     wire  [31:0] m_u$q;
     reg  m_u$clock;
-    reg  [31:0] m_v$d;
-    wire  [31:0] m_v$q;
     reg  m_v$clock;
-    reg  [31:0] m_w_lo$d;
-    wire  [31:0] m_w_lo$q;
+    reg  [15:0] m_v$a;
+    reg  [15:0] m_v$b;
+    wire  [31:0] m_v$p;
     reg  m_w_lo$clock;
-    reg  [31:0] m_w_hi$d;
-    wire  [31:0] m_w_hi$q;
+    reg  [15:0] m_w_lo$a;
+    reg  [15:0] m_w_lo$b;
+    wire  [31:0] m_w_lo$p;
     reg  m_w_hi$clock;
+    reg  [15:0] m_w_hi$a;
+    reg  [15:0] m_w_hi$b;
+    wire  [31:0] m_w_hi$p;
     reg  m_pad$d;
     wire  m_pad$q;
     reg  m_pad$clock;
@@ -3820,19 +3883,22 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .clock(m_u$clock)
     );
     top$cfb$lanes$1$m_v m_v(
-        .d(m_v$d),
-        .q(m_v$q),
-        .clock(m_v$clock)
+        .clock(m_v$clock),
+        .a(m_v$a),
+        .b(m_v$b),
+        .p(m_v$p)
     );
     top$cfb$lanes$1$m_w_lo m_w_lo(
-        .d(m_w_lo$d),
-        .q(m_w_lo$q),
-        .clock(m_w_lo$clock)
+        .clock(m_w_lo$clock),
+        .a(m_w_lo$a),
+        .b(m_w_lo$b),
+        .p(m_w_lo$p)
     );
     top$cfb$lanes$1$m_w_hi m_w_hi(
-        .d(m_w_hi$d),
-        .q(m_w_hi$q),
-        .clock(m_w_hi$clock)
+        .clock(m_w_hi$clock),
+        .a(m_w_hi$a),
+        .b(m_w_hi$b),
+        .p(m_w_hi$p)
     );
     top$cfb$lanes$1$m_pad m_pad(
         .d(m_pad$d),
@@ -3993,9 +4059,6 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         a_w$clock = clock;
         a_pad$clock = clock;
         m_u$clock = clock;
-        m_v$clock = clock;
-        m_w_lo$clock = clock;
-        m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
         xc_r$clock = clock;
@@ -4054,9 +4117,6 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         a_w$d = a_w$q;
         a_pad$d = a_pad$q;
         m_u$d = m_u$q;
-        m_v$d = m_v$q;
-        m_w_lo$d = m_w_lo$q;
-        m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
         xc_r$d = xc_r$q;
@@ -4151,11 +4211,17 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u$q;
-        m_w_lo$d = a_w$q * slab_lo$q;
-        m_w_hi$d = a_w$q * slab_hi$q;
+        m_v$clock = clock;
+        m_w_lo$clock = clock;
+        m_w_hi$clock = clock;
+        m_v$a = a_v$q;
+        m_v$b = b_u$q;
+        m_w_lo$a = a_w$q;
+        m_w_lo$b = slab_lo$q;
+        m_w_hi$a = a_w$q;
+        m_w_hi$b = slab_hi$q;
         m_pad$d = a_pad$q;
-        addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
+        addr$d = m_u$q + m_v$p + m_w_lo$p + (m_w_hi$p << 'h10);
         if (m_pad$q) begin
             addr$d = 'h0;
         end
@@ -4782,56 +4848,110 @@ module top$cfb$lanes$1$m_u(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$1$m_u
-module top$cfb$lanes$1$m_v(d,q,clock);
+module top$cfb$lanes$1$m_v(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$cfb$lanes$1$m_v
-module top$cfb$lanes$1$m_w_hi(d,q,clock);
+module top$cfb$lanes$1$m_w_hi(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$cfb$lanes$1$m_w_hi
-module top$cfb$lanes$1$m_w_lo(d,q,clock);
+module top$cfb$lanes$1$m_w_lo(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$cfb$lanes$1$m_w_lo
 module top$cfb$lanes$1$memory(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -5692,15 +5812,18 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] m_u$d;
     wire  [31:0] m_u$q;
     reg  m_u$clock;
-    reg  [31:0] m_v$d;
-    wire  [31:0] m_v$q;
     reg  m_v$clock;
-    reg  [31:0] m_w_lo$d;
-    wire  [31:0] m_w_lo$q;
+    reg  [15:0] m_v$a;
+    reg  [15:0] m_v$b;
+    wire  [31:0] m_v$p;
     reg  m_w_lo$clock;
-    reg  [31:0] m_w_hi$d;
-    wire  [31:0] m_w_hi$q;
+    reg  [15:0] m_w_lo$a;
+    reg  [15:0] m_w_lo$b;
+    wire  [31:0] m_w_lo$p;
     reg  m_w_hi$clock;
+    reg  [15:0] m_w_hi$a;
+    reg  [15:0] m_w_hi$b;
+    wire  [31:0] m_w_hi$p;
     reg  m_pad$d;
     wire  m_pad$q;
     reg  m_pad$clock;
@@ -5977,19 +6100,22 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .clock(m_u$clock)
     );
     top$cfb$lanes$2$m_v m_v(
-        .d(m_v$d),
-        .q(m_v$q),
-        .clock(m_v$clock)
+        .clock(m_v$clock),
+        .a(m_v$a),
+        .b(m_v$b),
+        .p(m_v$p)
     );
     top$cfb$lanes$2$m_w_lo m_w_lo(
-        .d(m_w_lo$d),
-        .q(m_w_lo$q),
-        .clock(m_w_lo$clock)
+        .clock(m_w_lo$clock),
+        .a(m_w_lo$a),
+        .b(m_w_lo$b),
+        .p(m_w_lo$p)
     );
     top$cfb$lanes$2$m_w_hi m_w_hi(
-        .d(m_w_hi$d),
-        .q(m_w_hi$q),
-        .clock(m_w_hi$clock)
+        .clock(m_w_hi$clock),
+        .a(m_w_hi$a),
+        .b(m_w_hi$b),
+        .p(m_w_hi$p)
     );
     top$cfb$lanes$2$m_pad m_pad(
         .d(m_pad$d),
@@ -6150,9 +6276,6 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         a_w$clock = clock;
         a_pad$clock = clock;
         m_u$clock = clock;
-        m_v$clock = clock;
-        m_w_lo$clock = clock;
-        m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
         xc_r$clock = clock;
@@ -6211,9 +6334,6 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         a_w$d = a_w$q;
         a_pad$d = a_pad$q;
         m_u$d = m_u$q;
-        m_v$d = m_v$q;
-        m_w_lo$d = m_w_lo$q;
-        m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
         xc_r$d = xc_r$q;
@@ -6308,11 +6428,17 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u$q;
-        m_w_lo$d = a_w$q * slab_lo$q;
-        m_w_hi$d = a_w$q * slab_hi$q;
+        m_v$clock = clock;
+        m_w_lo$clock = clock;
+        m_w_hi$clock = clock;
+        m_v$a = a_v$q;
+        m_v$b = b_u$q;
+        m_w_lo$a = a_w$q;
+        m_w_lo$b = slab_lo$q;
+        m_w_hi$a = a_w$q;
+        m_w_hi$b = slab_hi$q;
         m_pad$d = a_pad$q;
-        addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
+        addr$d = m_u$q + m_v$p + m_w_lo$p + (m_w_hi$p << 'h10);
         if (m_pad$q) begin
             addr$d = 'h0;
         end
@@ -6939,56 +7065,110 @@ module top$cfb$lanes$2$m_u(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$2$m_u
-module top$cfb$lanes$2$m_v(d,q,clock);
+module top$cfb$lanes$2$m_v(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$cfb$lanes$2$m_v
-module top$cfb$lanes$2$m_w_hi(d,q,clock);
+module top$cfb$lanes$2$m_w_hi(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$cfb$lanes$2$m_w_hi
-module top$cfb$lanes$2$m_w_lo(d,q,clock);
+module top$cfb$lanes$2$m_w_lo(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$cfb$lanes$2$m_w_lo
 module top$cfb$lanes$2$memory(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     
@@ -7849,15 +8029,18 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [31:0] m_u$d;
     wire  [31:0] m_u$q;
     reg  m_u$clock;
-    reg  [31:0] m_v$d;
-    wire  [31:0] m_v$q;
     reg  m_v$clock;
-    reg  [31:0] m_w_lo$d;
-    wire  [31:0] m_w_lo$q;
+    reg  [15:0] m_v$a;
+    reg  [15:0] m_v$b;
+    wire  [31:0] m_v$p;
     reg  m_w_lo$clock;
-    reg  [31:0] m_w_hi$d;
-    wire  [31:0] m_w_hi$q;
+    reg  [15:0] m_w_lo$a;
+    reg  [15:0] m_w_lo$b;
+    wire  [31:0] m_w_lo$p;
     reg  m_w_hi$clock;
+    reg  [15:0] m_w_hi$a;
+    reg  [15:0] m_w_hi$b;
+    wire  [31:0] m_w_hi$p;
     reg  m_pad$d;
     wire  m_pad$q;
     reg  m_pad$clock;
@@ -8134,19 +8317,22 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         .clock(m_u$clock)
     );
     top$cfb$lanes$3$m_v m_v(
-        .d(m_v$d),
-        .q(m_v$q),
-        .clock(m_v$clock)
+        .clock(m_v$clock),
+        .a(m_v$a),
+        .b(m_v$b),
+        .p(m_v$p)
     );
     top$cfb$lanes$3$m_w_lo m_w_lo(
-        .d(m_w_lo$d),
-        .q(m_w_lo$q),
-        .clock(m_w_lo$clock)
+        .clock(m_w_lo$clock),
+        .a(m_w_lo$a),
+        .b(m_w_lo$b),
+        .p(m_w_lo$p)
     );
     top$cfb$lanes$3$m_w_hi m_w_hi(
-        .d(m_w_hi$d),
-        .q(m_w_hi$q),
-        .clock(m_w_hi$clock)
+        .clock(m_w_hi$clock),
+        .a(m_w_hi$a),
+        .b(m_w_hi$b),
+        .p(m_w_hi$p)
     );
     top$cfb$lanes$3$m_pad m_pad(
         .d(m_pad$d),
@@ -8307,9 +8493,6 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         a_w$clock = clock;
         a_pad$clock = clock;
         m_u$clock = clock;
-        m_v$clock = clock;
-        m_w_lo$clock = clock;
-        m_w_hi$clock = clock;
         m_pad$clock = clock;
         addr$clock = clock;
         xc_r$clock = clock;
@@ -8368,9 +8551,6 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         a_w$d = a_w$q;
         a_pad$d = a_pad$q;
         m_u$d = m_u$q;
-        m_v$d = m_v$q;
-        m_w_lo$d = m_w_lo$q;
-        m_w_hi$d = m_w_hi$q;
         m_pad$d = m_pad$q;
         addr$d = addr$q;
         xc_r$d = xc_r$q;
@@ -8465,11 +8645,17 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
             a_w$d = a_n_s;
         end
         m_u$d = 32'(a_u$q) >> p_shift;
-        m_v$d = a_v$q * b_u$q;
-        m_w_lo$d = a_w$q * slab_lo$q;
-        m_w_hi$d = a_w$q * slab_hi$q;
+        m_v$clock = clock;
+        m_w_lo$clock = clock;
+        m_w_hi$clock = clock;
+        m_v$a = a_v$q;
+        m_v$b = b_u$q;
+        m_w_lo$a = a_w$q;
+        m_w_lo$b = slab_lo$q;
+        m_w_hi$a = a_w$q;
+        m_w_hi$b = slab_hi$q;
         m_pad$d = a_pad$q;
-        addr$d = m_u$q + m_v$q + m_w_lo$q + (m_w_hi$q << 'h10);
+        addr$d = m_u$q + m_v$p + m_w_lo$p + (m_w_hi$p << 'h10);
         if (m_pad$q) begin
             addr$d = 'h0;
         end
@@ -9096,56 +9282,110 @@ module top$cfb$lanes$3$m_u(d,q,clock);
     end
           
 endmodule // top$cfb$lanes$3$m_u
-module top$cfb$lanes$3$m_v(d,q,clock);
+module top$cfb$lanes$3$m_v(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$cfb$lanes$3$m_v
-module top$cfb$lanes$3$m_w_hi(d,q,clock);
+module top$cfb$lanes$3$m_w_hi(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$cfb$lanes$3$m_w_hi
-module top$cfb$lanes$3$m_w_lo(d,q,clock);
+module top$cfb$lanes$3$m_w_lo(clock,a,b,p);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [15:0] a;
+    input wire  [15:0] b;
+    output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef CUBE_ECP5_DSP
+    wire [35:0] product;
+    MULT18X18D #(
+       .REG_INPUTA_CLK("NONE"), .REG_INPUTB_CLK("NONE"), .REG_PIPELINE_CLK("NONE"),
+       .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0")
+    ) mult (
+       .A0(a[0]), .A1(a[1]), .A2(a[2]), .A3(a[3]), .A4(a[4]), .A5(a[5]), .A6(a[6]), .A7(a[7]), .A8(a[8]), .A9(a[9]), .A10(a[10]), .A11(a[11]), .A12(a[12]), .A13(a[13]), .A14(a[14]), .A15(a[15]), .A16(1'b0), .A17(1'b0),
+       .B0(b[0]), .B1(b[1]), .B2(b[2]), .B3(b[3]), .B4(b[4]), .B5(b[5]), .B6(b[6]), .B7(b[7]), .B8(b[8]), .B9(b[9]), .B10(b[10]), .B11(b[11]), .B12(b[12]), .B13(b[13]), .B14(b[14]), .B15(b[15]), .B16(1'b0), .B17(1'b0),
+       .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0), .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0), .C15(1'b0), .C16(1'b0), .C17(1'b0),
+       .SIGNEDA(1'b0), .SIGNEDB(1'b0), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0),
+       .P0(product[0]), .P1(product[1]), .P2(product[2]), .P3(product[3]), .P4(product[4]), .P5(product[5]), .P6(product[6]), .P7(product[7]), .P8(product[8]), .P9(product[9]), .P10(product[10]), .P11(product[11]), .P12(product[12]), .P13(product[13]), .P14(product[14]), .P15(product[15]), .P16(product[16]), .P17(product[17]), .P18(product[18]), .P19(product[19]), .P20(product[20]), .P21(product[21]), .P22(product[22]), .P23(product[23]), .P24(product[24]), .P25(product[25]), .P26(product[26]), .P27(product[27]), .P28(product[28]), .P29(product[29]), .P30(product[30]), .P31(product[31]), .P32(product[32]), .P33(product[33]), .P34(product[34]), .P35(product[35])
+    );
+    always @(*) begin
+       p = product[31:0];
+    end
+    `else
     initial begin
-       q = 'h0;
+       p = 'h0;
     end
     
     always @(posedge clock) begin
-       q <= d;
+       p <= a * b;
     end
-          
+    `endif
 endmodule // top$cfb$lanes$3$m_w_lo
 module top$cfb$lanes$3$memory(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
     

@@ -177,13 +177,12 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [63:0] ctl$dims;
     reg  [15:0] ctl$coord_mask;
     wire  [15:0] ctl$x_t;
-    wire  ctl$sr_t;
-    wire  ctl$dx_neg_t;
     wire  [15:0] ctl$dx_mag_t;
-    wire  ctl$dy_neg_t;
     wire  [15:0] ctl$dy_mag_t;
-    wire  ctl$x_out_t;
-    wire  ctl$y_out_t;
+    wire  [6:0] ctl$sel_t$0;
+    wire  [6:0] ctl$sel_t$1;
+    wire  [6:0] ctl$sel_t$2;
+    wire  [6:0] ctl$sel_t$3;
     wire  ctl$res_beat;
     wire  ctl$res_valid;
     wire  ctl$px_valid;
@@ -236,13 +235,10 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [63:0] cells$a$6;
     reg  [63:0] cells$a$7;
     reg  [63:0] cells$a$8;
-    reg  cells$sr;
-    reg  cells$dx_neg;
-    reg  [15:0] cells$dx_mag;
-    reg  cells$dy_neg;
-    reg  [15:0] cells$dy_mag;
-    reg  cells$x_out;
-    reg  cells$y_out;
+    reg  [6:0] cells$sel$0;
+    reg  [6:0] cells$sel$1;
+    reg  [6:0] cells$sel$2;
+    reg  [6:0] cells$sel$3;
     wire  [31:0] cells$c00$0;
     wire  [31:0] cells$c00$1;
     wire  [31:0] cells$c00$2;
@@ -393,13 +389,12 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dims(ctl$dims),
         .coord_mask(ctl$coord_mask),
         .x_t(ctl$x_t),
-        .sr_t(ctl$sr_t),
-        .dx_neg_t(ctl$dx_neg_t),
         .dx_mag_t(ctl$dx_mag_t),
-        .dy_neg_t(ctl$dy_neg_t),
         .dy_mag_t(ctl$dy_mag_t),
-        .x_out_t(ctl$x_out_t),
-        .y_out_t(ctl$y_out_t),
+        .sel_t$0(ctl$sel_t$0),
+        .sel_t$1(ctl$sel_t$1),
+        .sel_t$2(ctl$sel_t$2),
+        .sel_t$3(ctl$sel_t$3),
         .res_beat(ctl$res_beat),
         .res_valid(ctl$res_valid),
         .px_valid(ctl$px_valid),
@@ -456,13 +451,10 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         .a$6(cells$a$6),
         .a$7(cells$a$7),
         .a$8(cells$a$8),
-        .sr(cells$sr),
-        .dx_neg(cells$dx_neg),
-        .dx_mag(cells$dx_mag),
-        .dy_neg(cells$dy_neg),
-        .dy_mag(cells$dy_mag),
-        .x_out(cells$x_out),
-        .y_out(cells$y_out),
+        .sel$0(cells$sel$0),
+        .sel$1(cells$sel$1),
+        .sel$2(cells$sel$2),
+        .sel$3(cells$sel$3),
         .c00$0(cells$c00$0),
         .c00$1(cells$c00$1),
         .c00$2(cells$c00$2),
@@ -622,13 +614,10 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
         cells$a$7 = taps$a$7;
         cells$a$8 = taps$a$8;
         cells$order = order;
-        cells$x_out = ctl$x_out_t;
-        cells$y_out = ctl$y_out_t;
-        cells$sr = ctl$sr_t;
-        cells$dx_neg = ctl$dx_neg_t;
-        cells$dx_mag = ctl$dx_mag_t;
-        cells$dy_neg = ctl$dy_neg_t;
-        cells$dy_mag = ctl$dy_mag_t;
+        cells$sel$0 = ctl$sel_t$0;
+        cells$sel$1 = ctl$sel_t$1;
+        cells$sel$2 = ctl$sel_t$2;
+        cells$sel$3 = ctl$sel_t$3;
         bilinear$clock = clock;
         bilinear$c00$0 = cells$c00$0;
         bilinear$c10$0 = cells$c10$0;
@@ -671,7 +660,7 @@ module top$lanes$0(clock,host_write,host_address,host_data,dims,beats,order,beat
     end
     
 endmodule // top$lanes$0
-module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_out,y_out,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,order);
+module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sel$0,sel$1,sel$2,sel$3,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,order);
     
     // Module arguments
     input wire  [63:0] a$0;
@@ -683,13 +672,10 @@ module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     input wire  [63:0] a$6;
     input wire  [63:0] a$7;
     input wire  [63:0] a$8;
-    input wire  sr;
-    input wire  dx_neg;
-    input wire  [15:0] dx_mag;
-    input wire  dy_neg;
-    input wire  [15:0] dy_mag;
-    input wire  x_out;
-    input wire  y_out;
+    input wire  [6:0] sel$0;
+    input wire  [6:0] sel$1;
+    input wire  [6:0] sel$2;
+    input wire  [6:0] sel$3;
     output reg  [31:0] c00$0;
     output reg  [31:0] c00$1;
     output reg  [31:0] c00$2;
@@ -715,10 +701,22 @@ module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     
     // Local signals
     reg  [63:0] reset;
-    reg  [63:0] w00;
-    reg  [63:0] w10;
-    reg  [63:0] w01;
-    reg  [63:0] w11;
+    reg  [63:0] w00$0;
+    reg  [63:0] w00$1;
+    reg  [63:0] w00$2;
+    reg  [63:0] w00$3;
+    reg  [63:0] w10$0;
+    reg  [63:0] w10$1;
+    reg  [63:0] w10$2;
+    reg  [63:0] w10$3;
+    reg  [63:0] w01$0;
+    reg  [63:0] w01$1;
+    reg  [63:0] w01$2;
+    reg  [63:0] w01$3;
+    reg  [63:0] w11$0;
+    reg  [63:0] w11$1;
+    reg  [63:0] w11$2;
+    reg  [63:0] w11$3;
     
     // Update code
     always @(*) begin
@@ -726,80 +724,238 @@ module top$lanes$0$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
         if (order['h1]) begin
             reset = vmax;
         end
-        w00 = a$0;
-        w10 = a$0;
-        w01 = a$0;
-        w11 = a$0;
-        if (dx_mag != 'h0) begin
-            if (dx_neg) begin
-                w10 = a$2;
+        w00$0 = a$0;
+        w10$0 = a$0;
+        w01$0 = a$0;
+        if (sel$0['h2]) begin
+            if (sel$0['h1]) begin
+                w10$0 = a$2;
             end
             else begin
-                w10 = a$1;
+                w10$0 = a$1;
             end
         end
-        if (dy_mag != 'h0) begin
-            if (dy_neg) begin
-                w01 = a$4;
+        if (sel$0['h4]) begin
+            if (sel$0['h3]) begin
+                w01$0 = a$4;
             end
             else begin
-                w01 = a$3;
+                w01$0 = a$3;
             end
         end
-        w11 = w01;
-        if (dx_mag != 'h0) begin
-            w11 = w10;
-            if (dy_mag != 'h0) begin
-                if (dx_neg) begin
-                    if (dy_neg) begin
-                        w11 = a$8;
+        w11$0 = w01$0;
+        if (sel$0['h2]) begin
+            w11$0 = w10$0;
+            if (sel$0['h4]) begin
+                if (sel$0['h1]) begin
+                    if (sel$0['h3]) begin
+                        w11$0 = a$8;
                     end
                     else begin
-                        w11 = a$6;
+                        w11$0 = a$6;
                     end
                 end
-                else if (dy_neg) begin
-                    w11 = a$7;
+                else if (sel$0['h3]) begin
+                    w11$0 = a$7;
                 end
                 else begin
-                    w11 = a$5;
+                    w11$0 = a$5;
                 end
             end
         end
-        if (x_out) begin
-            w10 = reset;
-            w11 = reset;
+        if (sel$0['h5]) begin
+            w10$0 = reset;
+            w11$0 = reset;
         end
-        if (y_out) begin
-            w01 = reset;
-            w11 = reset;
+        if (sel$0['h6]) begin
+            w01$0 = reset;
+            w11$0 = reset;
         end
-        if (sr) begin
-            w00 = reset;
-            w10 = reset;
-            w01 = reset;
-            w11 = reset;
+        if (sel$0['h0]) begin
+            w00$0 = reset;
+            w10$0 = reset;
+            w01$0 = reset;
+            w11$0 = reset;
         end
-        c00$0 = 32'(w00 & r_mask);
-        c00$1 = 32'((w00 >> 'h10) & gba_mask);
-        c00$2 = 32'((w00 >> 'h20) & gba_mask);
-        c00$3 = 32'((w00 >> 'h30) & gba_mask);
-        c10$0 = 32'(w10 & r_mask);
-        c10$1 = 32'((w10 >> 'h10) & gba_mask);
-        c10$2 = 32'((w10 >> 'h20) & gba_mask);
-        c10$3 = 32'((w10 >> 'h30) & gba_mask);
-        c01$0 = 32'(w01 & r_mask);
-        c01$1 = 32'((w01 >> 'h10) & gba_mask);
-        c01$2 = 32'((w01 >> 'h20) & gba_mask);
-        c01$3 = 32'((w01 >> 'h30) & gba_mask);
-        c11$0 = 32'(w11 & r_mask);
-        c11$1 = 32'((w11 >> 'h10) & gba_mask);
-        c11$2 = 32'((w11 >> 'h20) & gba_mask);
-        c11$3 = 32'((w11 >> 'h30) & gba_mask);
+        w00$1 = a$0;
+        w10$1 = a$0;
+        w01$1 = a$0;
+        if (sel$1['h2]) begin
+            if (sel$1['h1]) begin
+                w10$1 = a$2;
+            end
+            else begin
+                w10$1 = a$1;
+            end
+        end
+        if (sel$1['h4]) begin
+            if (sel$1['h3]) begin
+                w01$1 = a$4;
+            end
+            else begin
+                w01$1 = a$3;
+            end
+        end
+        w11$1 = w01$1;
+        if (sel$1['h2]) begin
+            w11$1 = w10$1;
+            if (sel$1['h4]) begin
+                if (sel$1['h1]) begin
+                    if (sel$1['h3]) begin
+                        w11$1 = a$8;
+                    end
+                    else begin
+                        w11$1 = a$6;
+                    end
+                end
+                else if (sel$1['h3]) begin
+                    w11$1 = a$7;
+                end
+                else begin
+                    w11$1 = a$5;
+                end
+            end
+        end
+        if (sel$1['h5]) begin
+            w10$1 = reset;
+            w11$1 = reset;
+        end
+        if (sel$1['h6]) begin
+            w01$1 = reset;
+            w11$1 = reset;
+        end
+        if (sel$1['h0]) begin
+            w00$1 = reset;
+            w10$1 = reset;
+            w01$1 = reset;
+            w11$1 = reset;
+        end
+        w00$2 = a$0;
+        w10$2 = a$0;
+        w01$2 = a$0;
+        if (sel$2['h2]) begin
+            if (sel$2['h1]) begin
+                w10$2 = a$2;
+            end
+            else begin
+                w10$2 = a$1;
+            end
+        end
+        if (sel$2['h4]) begin
+            if (sel$2['h3]) begin
+                w01$2 = a$4;
+            end
+            else begin
+                w01$2 = a$3;
+            end
+        end
+        w11$2 = w01$2;
+        if (sel$2['h2]) begin
+            w11$2 = w10$2;
+            if (sel$2['h4]) begin
+                if (sel$2['h1]) begin
+                    if (sel$2['h3]) begin
+                        w11$2 = a$8;
+                    end
+                    else begin
+                        w11$2 = a$6;
+                    end
+                end
+                else if (sel$2['h3]) begin
+                    w11$2 = a$7;
+                end
+                else begin
+                    w11$2 = a$5;
+                end
+            end
+        end
+        if (sel$2['h5]) begin
+            w10$2 = reset;
+            w11$2 = reset;
+        end
+        if (sel$2['h6]) begin
+            w01$2 = reset;
+            w11$2 = reset;
+        end
+        if (sel$2['h0]) begin
+            w00$2 = reset;
+            w10$2 = reset;
+            w01$2 = reset;
+            w11$2 = reset;
+        end
+        w00$3 = a$0;
+        w10$3 = a$0;
+        w01$3 = a$0;
+        if (sel$3['h2]) begin
+            if (sel$3['h1]) begin
+                w10$3 = a$2;
+            end
+            else begin
+                w10$3 = a$1;
+            end
+        end
+        if (sel$3['h4]) begin
+            if (sel$3['h3]) begin
+                w01$3 = a$4;
+            end
+            else begin
+                w01$3 = a$3;
+            end
+        end
+        w11$3 = w01$3;
+        if (sel$3['h2]) begin
+            w11$3 = w10$3;
+            if (sel$3['h4]) begin
+                if (sel$3['h1]) begin
+                    if (sel$3['h3]) begin
+                        w11$3 = a$8;
+                    end
+                    else begin
+                        w11$3 = a$6;
+                    end
+                end
+                else if (sel$3['h3]) begin
+                    w11$3 = a$7;
+                end
+                else begin
+                    w11$3 = a$5;
+                end
+            end
+        end
+        if (sel$3['h5]) begin
+            w10$3 = reset;
+            w11$3 = reset;
+        end
+        if (sel$3['h6]) begin
+            w01$3 = reset;
+            w11$3 = reset;
+        end
+        if (sel$3['h0]) begin
+            w00$3 = reset;
+            w10$3 = reset;
+            w01$3 = reset;
+            w11$3 = reset;
+        end
+        c00$0 = 32'(w00$0 & r_mask);
+        c00$1 = 32'((w00$1 >> 'h10) & gba_mask);
+        c00$2 = 32'((w00$2 >> 'h20) & gba_mask);
+        c00$3 = 32'((w00$3 >> 'h30) & gba_mask);
+        c10$0 = 32'(w10$0 & r_mask);
+        c10$1 = 32'((w10$1 >> 'h10) & gba_mask);
+        c10$2 = 32'((w10$2 >> 'h20) & gba_mask);
+        c10$3 = 32'((w10$3 >> 'h30) & gba_mask);
+        c01$0 = 32'(w01$0 & r_mask);
+        c01$1 = 32'((w01$1 >> 'h10) & gba_mask);
+        c01$2 = 32'((w01$2 >> 'h20) & gba_mask);
+        c01$3 = 32'((w01$3 >> 'h30) & gba_mask);
+        c11$0 = 32'(w11$0 & r_mask);
+        c11$1 = 32'((w11$1 >> 'h10) & gba_mask);
+        c11$2 = 32'((w11$2 >> 'h20) & gba_mask);
+        c11$3 = 32'((w11$3 >> 'h30) & gba_mask);
     end
     
 endmodule // top$lanes$0$cells
-module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,dx_mag_t,dy_mag_t,sel_t$0,sel_t$1,sel_t$2,sel_t$3,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -819,13 +975,12 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [63:0] dims;
     input wire  [15:0] coord_mask;
     output reg  [15:0] x_t;
-    output reg  sr_t;
-    output reg  dx_neg_t;
     output reg  [15:0] dx_mag_t;
-    output reg  dy_neg_t;
     output reg  [15:0] dy_mag_t;
-    output reg  x_out_t;
-    output reg  y_out_t;
+    output reg  [6:0] sel_t$0;
+    output reg  [6:0] sel_t$1;
+    output reg  [6:0] sel_t$2;
+    output reg  [6:0] sel_t$3;
     output reg  res_beat;
     output reg  res_valid;
     output reg  px_valid;
@@ -840,12 +995,18 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] ny_last$d;
     wire  [15:0] ny_last$q;
     reg  ny_last$clock;
-    reg  x_out_q$d;
-    wire  x_out_q$q;
-    reg  x_out_q$clock;
-    reg  y_out_q$d;
-    wire  y_out_q$q;
-    reg  y_out_q$clock;
+    reg  [6:0] sel_q$0$d;
+    wire  [6:0] sel_q$0$q;
+    reg  sel_q$0$clock;
+    reg  [6:0] sel_q$1$d;
+    wire  [6:0] sel_q$1$q;
+    reg  sel_q$1$clock;
+    reg  [6:0] sel_q$2$d;
+    wire  [6:0] sel_q$2$q;
+    reg  sel_q$2$clock;
+    reg  [6:0] sel_q$3$d;
+    wire  [6:0] sel_q$3$q;
+    reg  sel_q$3$clock;
     reg  [15:0] x_q$0$d;
     wire  [15:0] x_q$0$q;
     reg  x_q$0$clock;
@@ -930,9 +1091,6 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  sr_q$8$d;
     wire  sr_q$8$q;
     reg  sr_q$8$clock;
-    reg  sr_q$9$d;
-    wire  sr_q$9$q;
-    reg  sr_q$9$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
@@ -960,9 +1118,6 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dxn_q$8$d;
     wire  dxn_q$8$q;
     reg  dxn_q$8$clock;
-    reg  dxn_q$9$d;
-    wire  dxn_q$9$q;
-    reg  dxn_q$9$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
@@ -1020,9 +1175,6 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dyn_q$8$d;
     wire  dyn_q$8$q;
     reg  dyn_q$8$clock;
-    reg  dyn_q$9$d;
-    wire  dyn_q$9$q;
-    reg  dyn_q$9$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
@@ -1432,6 +1584,13 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     wire  [2:0] face_q$20$q;
     reg  face_q$20$clock;
     
+    // Local signals
+    reg  x_out;
+    reg  y_out;
+    reg  dx_nz;
+    reg  dy_nz;
+    reg  [6:0] sel;
+    
     // Sub module instances
     top$lanes$0$ctl$nx_last nx_last(
         .d(nx_last$d),
@@ -1443,15 +1602,25 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(ny_last$q),
         .clock(ny_last$clock)
     );
-    top$lanes$0$ctl$x_out_q x_out_q(
-        .d(x_out_q$d),
-        .q(x_out_q$q),
-        .clock(x_out_q$clock)
+    top$lanes$0$ctl$sel_q$0 sel_q$0(
+        .d(sel_q$0$d),
+        .q(sel_q$0$q),
+        .clock(sel_q$0$clock)
     );
-    top$lanes$0$ctl$y_out_q y_out_q(
-        .d(y_out_q$d),
-        .q(y_out_q$q),
-        .clock(y_out_q$clock)
+    top$lanes$0$ctl$sel_q$1 sel_q$1(
+        .d(sel_q$1$d),
+        .q(sel_q$1$q),
+        .clock(sel_q$1$clock)
+    );
+    top$lanes$0$ctl$sel_q$2 sel_q$2(
+        .d(sel_q$2$d),
+        .q(sel_q$2$q),
+        .clock(sel_q$2$clock)
+    );
+    top$lanes$0$ctl$sel_q$3 sel_q$3(
+        .d(sel_q$3$d),
+        .q(sel_q$3$q),
+        .clock(sel_q$3$clock)
     );
     top$lanes$0$ctl$x_q$0 x_q$0(
         .d(x_q$0$d),
@@ -1593,11 +1762,6 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$8$q),
         .clock(sr_q$8$clock)
     );
-    top$lanes$0$ctl$sr_q$9 sr_q$9(
-        .d(sr_q$9$d),
-        .q(sr_q$9$q),
-        .clock(sr_q$9$clock)
-    );
     top$lanes$0$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -1642,11 +1806,6 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$8$d),
         .q(dxn_q$8$q),
         .clock(dxn_q$8$clock)
-    );
-    top$lanes$0$ctl$dxn_q$9 dxn_q$9(
-        .d(dxn_q$9$d),
-        .q(dxn_q$9$q),
-        .clock(dxn_q$9$clock)
     );
     top$lanes$0$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -1742,11 +1901,6 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dyn_q$8$d),
         .q(dyn_q$8$q),
         .clock(dyn_q$8$clock)
-    );
-    top$lanes$0$ctl$dyn_q$9 dyn_q$9(
-        .d(dyn_q$9$d),
-        .q(dyn_q$9$q),
-        .clock(dyn_q$9$clock)
     );
     top$lanes$0$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
@@ -2433,71 +2587,37 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     always @(*) begin
         nx_last$clock = clock;
         ny_last$clock = clock;
-        x_out_q$clock = clock;
-        y_out_q$clock = clock;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
-        x_out_q$d = x_out_q$q;
-        y_out_q$d = y_out_q$q;
         x_q$0$clock = clock;
-        sr_q$0$clock = clock;
-        dxn_q$0$clock = clock;
         dxm_q$0$clock = clock;
-        dyn_q$0$clock = clock;
         dym_q$0$clock = clock;
         x_q$1$clock = clock;
-        sr_q$1$clock = clock;
-        dxn_q$1$clock = clock;
         dxm_q$1$clock = clock;
-        dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
         x_q$2$clock = clock;
-        sr_q$2$clock = clock;
-        dxn_q$2$clock = clock;
         dxm_q$2$clock = clock;
-        dyn_q$2$clock = clock;
         dym_q$2$clock = clock;
         x_q$3$clock = clock;
-        sr_q$3$clock = clock;
-        dxn_q$3$clock = clock;
         dxm_q$3$clock = clock;
-        dyn_q$3$clock = clock;
         dym_q$3$clock = clock;
         x_q$4$clock = clock;
-        sr_q$4$clock = clock;
-        dxn_q$4$clock = clock;
         dxm_q$4$clock = clock;
-        dyn_q$4$clock = clock;
         dym_q$4$clock = clock;
         x_q$5$clock = clock;
-        sr_q$5$clock = clock;
-        dxn_q$5$clock = clock;
         dxm_q$5$clock = clock;
-        dyn_q$5$clock = clock;
         dym_q$5$clock = clock;
         x_q$6$clock = clock;
-        sr_q$6$clock = clock;
-        dxn_q$6$clock = clock;
         dxm_q$6$clock = clock;
-        dyn_q$6$clock = clock;
         dym_q$6$clock = clock;
         x_q$7$clock = clock;
-        sr_q$7$clock = clock;
-        dxn_q$7$clock = clock;
         dxm_q$7$clock = clock;
-        dyn_q$7$clock = clock;
         dym_q$7$clock = clock;
         x_q$8$clock = clock;
-        sr_q$8$clock = clock;
-        dxn_q$8$clock = clock;
         dxm_q$8$clock = clock;
-        dyn_q$8$clock = clock;
         dym_q$8$clock = clock;
         x_q$9$clock = clock;
-        sr_q$9$clock = clock;
-        dxn_q$9$clock = clock;
         dxm_q$9$clock = clock;
-        dyn_q$9$clock = clock;
         dym_q$9$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
@@ -2633,104 +2753,138 @@ module top$lanes$0$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dyn_q$0$d = dy_neg;
         dym_q$0$d = dy_mag;
         x_q$1$d = x_q$0$q;
-        sr_q$1$d = sr_q$0$q;
-        dxn_q$1$d = dxn_q$0$q;
         dxm_q$1$d = dxm_q$0$q;
-        dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
         x_q$2$d = x_q$1$q;
-        sr_q$2$d = sr_q$1$q;
-        dxn_q$2$d = dxn_q$1$q;
         dxm_q$2$d = dxm_q$1$q;
-        dyn_q$2$d = dyn_q$1$q;
         dym_q$2$d = dym_q$1$q;
         x_q$3$d = x_q$2$q;
-        sr_q$3$d = sr_q$2$q;
-        dxn_q$3$d = dxn_q$2$q;
         dxm_q$3$d = dxm_q$2$q;
-        dyn_q$3$d = dyn_q$2$q;
         dym_q$3$d = dym_q$2$q;
         x_q$4$d = x_q$3$q;
-        sr_q$4$d = sr_q$3$q;
-        dxn_q$4$d = dxn_q$3$q;
         dxm_q$4$d = dxm_q$3$q;
-        dyn_q$4$d = dyn_q$3$q;
         dym_q$4$d = dym_q$3$q;
         x_q$5$d = x_q$4$q;
-        sr_q$5$d = sr_q$4$q;
-        dxn_q$5$d = dxn_q$4$q;
         dxm_q$5$d = dxm_q$4$q;
-        dyn_q$5$d = dyn_q$4$q;
         dym_q$5$d = dym_q$4$q;
         x_q$6$d = x_q$5$q;
-        sr_q$6$d = sr_q$5$q;
-        dxn_q$6$d = dxn_q$5$q;
         dxm_q$6$d = dxm_q$5$q;
-        dyn_q$6$d = dyn_q$5$q;
         dym_q$6$d = dym_q$5$q;
         x_q$7$d = x_q$6$q;
-        sr_q$7$d = sr_q$6$q;
-        dxn_q$7$d = dxn_q$6$q;
         dxm_q$7$d = dxm_q$6$q;
-        dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
         x_q$8$d = x_q$7$q;
-        sr_q$8$d = sr_q$7$q;
-        dxn_q$8$d = dxn_q$7$q;
         dxm_q$8$d = dxm_q$7$q;
-        dyn_q$8$d = dyn_q$7$q;
         dym_q$8$d = dym_q$7$q;
         x_q$9$d = x_q$8$q;
-        sr_q$9$d = sr_q$8$q;
-        dxn_q$9$d = dxn_q$8$q;
         dxm_q$9$d = dxm_q$8$q;
-        dyn_q$9$d = dyn_q$8$q;
         dym_q$9$d = dym_q$8$q;
         y_q$0$clock = clock;
+        sr_q$0$clock = clock;
+        dxn_q$0$clock = clock;
+        dyn_q$0$clock = clock;
         y_q$1$clock = clock;
+        sr_q$1$clock = clock;
+        dxn_q$1$clock = clock;
+        dyn_q$1$clock = clock;
         y_q$2$clock = clock;
+        sr_q$2$clock = clock;
+        dxn_q$2$clock = clock;
+        dyn_q$2$clock = clock;
         y_q$3$clock = clock;
+        sr_q$3$clock = clock;
+        dxn_q$3$clock = clock;
+        dyn_q$3$clock = clock;
         y_q$4$clock = clock;
+        sr_q$4$clock = clock;
+        dxn_q$4$clock = clock;
+        dyn_q$4$clock = clock;
         y_q$5$clock = clock;
+        sr_q$5$clock = clock;
+        dxn_q$5$clock = clock;
+        dyn_q$5$clock = clock;
         y_q$6$clock = clock;
+        sr_q$6$clock = clock;
+        dxn_q$6$clock = clock;
+        dyn_q$6$clock = clock;
         y_q$7$clock = clock;
+        sr_q$7$clock = clock;
+        dxn_q$7$clock = clock;
+        dyn_q$7$clock = clock;
         y_q$8$clock = clock;
+        sr_q$8$clock = clock;
+        dxn_q$8$clock = clock;
+        dyn_q$8$clock = clock;
         y_q$1$d = y_q$0$q;
+        sr_q$1$d = sr_q$0$q;
+        dxn_q$1$d = dxn_q$0$q;
+        dyn_q$1$d = dyn_q$0$q;
         y_q$2$d = y_q$1$q;
+        sr_q$2$d = sr_q$1$q;
+        dxn_q$2$d = dxn_q$1$q;
+        dyn_q$2$d = dyn_q$1$q;
         y_q$3$d = y_q$2$q;
+        sr_q$3$d = sr_q$2$q;
+        dxn_q$3$d = dxn_q$2$q;
+        dyn_q$3$d = dyn_q$2$q;
         y_q$4$d = y_q$3$q;
+        sr_q$4$d = sr_q$3$q;
+        dxn_q$4$d = dxn_q$3$q;
+        dyn_q$4$d = dyn_q$3$q;
         y_q$5$d = y_q$4$q;
+        sr_q$5$d = sr_q$4$q;
+        dxn_q$5$d = dxn_q$4$q;
+        dyn_q$5$d = dyn_q$4$q;
         y_q$6$d = y_q$5$q;
+        sr_q$6$d = sr_q$5$q;
+        dxn_q$6$d = dxn_q$5$q;
+        dyn_q$6$d = dyn_q$5$q;
         y_q$7$d = y_q$6$q;
+        sr_q$7$d = sr_q$6$q;
+        dxn_q$7$d = dxn_q$6$q;
+        dyn_q$7$d = dyn_q$6$q;
         y_q$8$d = y_q$7$q;
+        sr_q$8$d = sr_q$7$q;
+        dxn_q$8$d = dxn_q$7$q;
+        dyn_q$8$d = dyn_q$7$q;
         x_t = x_q$9$q;
-        sr_t = sr_q$9$q;
-        dx_neg_t = dxn_q$9$q;
         dx_mag_t = dxm_q$9$q;
-        dy_neg_t = dyn_q$9$q;
         dy_mag_t = dym_q$9$q;
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
-        x_out_q$d = 1'b0;
+        x_out = 1'b0;
         if (dxm_q$8$q != 'h0) begin
             if (dxn_q$8$q) begin
-                x_out_q$d = x_q$8$q == nx_last$q;
+                x_out = x_q$8$q == nx_last$q;
             end
             else begin
-                x_out_q$d = x_q$8$q == 'h0;
+                x_out = x_q$8$q == 'h0;
             end
         end
-        y_out_q$d = 1'b0;
+        y_out = 1'b0;
         if (dym_q$8$q != 'h0) begin
             if (dyn_q$8$q) begin
-                y_out_q$d = y_q$8$q == ny_last$q;
+                y_out = y_q$8$q == ny_last$q;
             end
             else begin
-                y_out_q$d = y_q$8$q == 'h0;
+                y_out = y_q$8$q == 'h0;
             end
         end
-        x_out_t = x_out_q$q;
-        y_out_t = y_out_q$q;
+        dx_nz = dxm_q$8$q != 'h0;
+        dy_nz = dym_q$8$q != 'h0;
+        sel = 7'(sr_q$8$q) | (7'(dxn_q$8$q) << 'h1) | (7'(dx_nz) << 'h2) | (7'(dyn_q$8$q) << 'h3) | (7'(dy_nz) << 'h4) | (7'(x_out) << 'h5) | (7'(y_out) << 'h6);
+        sel_q$0$clock = clock;
+        sel_q$0$d = sel;
+        sel_t$0 = sel_q$0$q;
+        sel_q$1$clock = clock;
+        sel_q$1$d = sel;
+        sel_t$1 = sel_q$1$q;
+        sel_q$2$clock = clock;
+        sel_q$2$d = sel;
+        sel_t$2 = sel_q$2$q;
+        sel_q$3$clock = clock;
+        sel_q$3$d = sel;
+        sel_t$3 = sel_q$3$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -3903,23 +4057,6 @@ module top$lanes$0$ctl$dxn_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dxn_q$8
-module top$lanes$0$ctl$dxn_q$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$dxn_q$9
 module top$lanes$0$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -4243,23 +4380,6 @@ module top$lanes$0$ctl$dyn_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$dyn_q$8
-module top$lanes$0$ctl$dyn_q$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$dyn_q$9
 module top$lanes$0$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -5365,6 +5485,74 @@ module top$lanes$0$ctl$pad_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$pad_q$9
+module top$lanes$0$ctl$sel_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$ctl$sel_q$0
+module top$lanes$0$ctl$sel_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$ctl$sel_q$1
+module top$lanes$0$ctl$sel_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$ctl$sel_q$2
+module top$lanes$0$ctl$sel_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$ctl$sel_q$3
 module top$lanes$0$ctl$sr_q$0(d,q,clock);
     
     // Module arguments
@@ -5518,23 +5706,6 @@ module top$lanes$0$ctl$sr_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$sr_q$8
-module top$lanes$0$ctl$sr_q$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$sr_q$9
 module top$lanes$0$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -5892,23 +6063,6 @@ module top$lanes$0$ctl$v_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$v_q$9
-module top$lanes$0$ctl$x_out_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$x_out_q
 module top$lanes$0$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -6079,23 +6233,6 @@ module top$lanes$0$ctl$x_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$0$ctl$x_q$9
-module top$lanes$0$ctl$y_out_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$ctl$y_out_q
 module top$lanes$0$ctl$y_q$0(d,q,clock);
     
     // Module arguments
@@ -6548,13 +6685,12 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [63:0] ctl$dims;
     reg  [15:0] ctl$coord_mask;
     wire  [15:0] ctl$x_t;
-    wire  ctl$sr_t;
-    wire  ctl$dx_neg_t;
     wire  [15:0] ctl$dx_mag_t;
-    wire  ctl$dy_neg_t;
     wire  [15:0] ctl$dy_mag_t;
-    wire  ctl$x_out_t;
-    wire  ctl$y_out_t;
+    wire  [6:0] ctl$sel_t$0;
+    wire  [6:0] ctl$sel_t$1;
+    wire  [6:0] ctl$sel_t$2;
+    wire  [6:0] ctl$sel_t$3;
     wire  ctl$res_beat;
     wire  ctl$res_valid;
     wire  ctl$px_valid;
@@ -6607,13 +6743,10 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [63:0] cells$a$6;
     reg  [63:0] cells$a$7;
     reg  [63:0] cells$a$8;
-    reg  cells$sr;
-    reg  cells$dx_neg;
-    reg  [15:0] cells$dx_mag;
-    reg  cells$dy_neg;
-    reg  [15:0] cells$dy_mag;
-    reg  cells$x_out;
-    reg  cells$y_out;
+    reg  [6:0] cells$sel$0;
+    reg  [6:0] cells$sel$1;
+    reg  [6:0] cells$sel$2;
+    reg  [6:0] cells$sel$3;
     wire  [31:0] cells$c00$0;
     wire  [31:0] cells$c00$1;
     wire  [31:0] cells$c00$2;
@@ -6764,13 +6897,12 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dims(ctl$dims),
         .coord_mask(ctl$coord_mask),
         .x_t(ctl$x_t),
-        .sr_t(ctl$sr_t),
-        .dx_neg_t(ctl$dx_neg_t),
         .dx_mag_t(ctl$dx_mag_t),
-        .dy_neg_t(ctl$dy_neg_t),
         .dy_mag_t(ctl$dy_mag_t),
-        .x_out_t(ctl$x_out_t),
-        .y_out_t(ctl$y_out_t),
+        .sel_t$0(ctl$sel_t$0),
+        .sel_t$1(ctl$sel_t$1),
+        .sel_t$2(ctl$sel_t$2),
+        .sel_t$3(ctl$sel_t$3),
         .res_beat(ctl$res_beat),
         .res_valid(ctl$res_valid),
         .px_valid(ctl$px_valid),
@@ -6827,13 +6959,10 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         .a$6(cells$a$6),
         .a$7(cells$a$7),
         .a$8(cells$a$8),
-        .sr(cells$sr),
-        .dx_neg(cells$dx_neg),
-        .dx_mag(cells$dx_mag),
-        .dy_neg(cells$dy_neg),
-        .dy_mag(cells$dy_mag),
-        .x_out(cells$x_out),
-        .y_out(cells$y_out),
+        .sel$0(cells$sel$0),
+        .sel$1(cells$sel$1),
+        .sel$2(cells$sel$2),
+        .sel$3(cells$sel$3),
         .c00$0(cells$c00$0),
         .c00$1(cells$c00$1),
         .c00$2(cells$c00$2),
@@ -6993,13 +7122,10 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
         cells$a$7 = taps$a$7;
         cells$a$8 = taps$a$8;
         cells$order = order;
-        cells$x_out = ctl$x_out_t;
-        cells$y_out = ctl$y_out_t;
-        cells$sr = ctl$sr_t;
-        cells$dx_neg = ctl$dx_neg_t;
-        cells$dx_mag = ctl$dx_mag_t;
-        cells$dy_neg = ctl$dy_neg_t;
-        cells$dy_mag = ctl$dy_mag_t;
+        cells$sel$0 = ctl$sel_t$0;
+        cells$sel$1 = ctl$sel_t$1;
+        cells$sel$2 = ctl$sel_t$2;
+        cells$sel$3 = ctl$sel_t$3;
         bilinear$clock = clock;
         bilinear$c00$0 = cells$c00$0;
         bilinear$c10$0 = cells$c10$0;
@@ -7042,7 +7168,7 @@ module top$lanes$1(clock,host_write,host_address,host_data,dims,beats,order,beat
     end
     
 endmodule // top$lanes$1
-module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_out,y_out,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,order);
+module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sel$0,sel$1,sel$2,sel$3,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,order);
     
     // Module arguments
     input wire  [63:0] a$0;
@@ -7054,13 +7180,10 @@ module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     input wire  [63:0] a$6;
     input wire  [63:0] a$7;
     input wire  [63:0] a$8;
-    input wire  sr;
-    input wire  dx_neg;
-    input wire  [15:0] dx_mag;
-    input wire  dy_neg;
-    input wire  [15:0] dy_mag;
-    input wire  x_out;
-    input wire  y_out;
+    input wire  [6:0] sel$0;
+    input wire  [6:0] sel$1;
+    input wire  [6:0] sel$2;
+    input wire  [6:0] sel$3;
     output reg  [31:0] c00$0;
     output reg  [31:0] c00$1;
     output reg  [31:0] c00$2;
@@ -7086,10 +7209,22 @@ module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     
     // Local signals
     reg  [63:0] reset;
-    reg  [63:0] w00;
-    reg  [63:0] w10;
-    reg  [63:0] w01;
-    reg  [63:0] w11;
+    reg  [63:0] w00$0;
+    reg  [63:0] w00$1;
+    reg  [63:0] w00$2;
+    reg  [63:0] w00$3;
+    reg  [63:0] w10$0;
+    reg  [63:0] w10$1;
+    reg  [63:0] w10$2;
+    reg  [63:0] w10$3;
+    reg  [63:0] w01$0;
+    reg  [63:0] w01$1;
+    reg  [63:0] w01$2;
+    reg  [63:0] w01$3;
+    reg  [63:0] w11$0;
+    reg  [63:0] w11$1;
+    reg  [63:0] w11$2;
+    reg  [63:0] w11$3;
     
     // Update code
     always @(*) begin
@@ -7097,80 +7232,238 @@ module top$lanes$1$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
         if (order['h1]) begin
             reset = vmax;
         end
-        w00 = a$0;
-        w10 = a$0;
-        w01 = a$0;
-        w11 = a$0;
-        if (dx_mag != 'h0) begin
-            if (dx_neg) begin
-                w10 = a$2;
+        w00$0 = a$0;
+        w10$0 = a$0;
+        w01$0 = a$0;
+        if (sel$0['h2]) begin
+            if (sel$0['h1]) begin
+                w10$0 = a$2;
             end
             else begin
-                w10 = a$1;
+                w10$0 = a$1;
             end
         end
-        if (dy_mag != 'h0) begin
-            if (dy_neg) begin
-                w01 = a$4;
+        if (sel$0['h4]) begin
+            if (sel$0['h3]) begin
+                w01$0 = a$4;
             end
             else begin
-                w01 = a$3;
+                w01$0 = a$3;
             end
         end
-        w11 = w01;
-        if (dx_mag != 'h0) begin
-            w11 = w10;
-            if (dy_mag != 'h0) begin
-                if (dx_neg) begin
-                    if (dy_neg) begin
-                        w11 = a$8;
+        w11$0 = w01$0;
+        if (sel$0['h2]) begin
+            w11$0 = w10$0;
+            if (sel$0['h4]) begin
+                if (sel$0['h1]) begin
+                    if (sel$0['h3]) begin
+                        w11$0 = a$8;
                     end
                     else begin
-                        w11 = a$6;
+                        w11$0 = a$6;
                     end
                 end
-                else if (dy_neg) begin
-                    w11 = a$7;
+                else if (sel$0['h3]) begin
+                    w11$0 = a$7;
                 end
                 else begin
-                    w11 = a$5;
+                    w11$0 = a$5;
                 end
             end
         end
-        if (x_out) begin
-            w10 = reset;
-            w11 = reset;
+        if (sel$0['h5]) begin
+            w10$0 = reset;
+            w11$0 = reset;
         end
-        if (y_out) begin
-            w01 = reset;
-            w11 = reset;
+        if (sel$0['h6]) begin
+            w01$0 = reset;
+            w11$0 = reset;
         end
-        if (sr) begin
-            w00 = reset;
-            w10 = reset;
-            w01 = reset;
-            w11 = reset;
+        if (sel$0['h0]) begin
+            w00$0 = reset;
+            w10$0 = reset;
+            w01$0 = reset;
+            w11$0 = reset;
         end
-        c00$0 = 32'(w00 & r_mask);
-        c00$1 = 32'((w00 >> 'h10) & gba_mask);
-        c00$2 = 32'((w00 >> 'h20) & gba_mask);
-        c00$3 = 32'((w00 >> 'h30) & gba_mask);
-        c10$0 = 32'(w10 & r_mask);
-        c10$1 = 32'((w10 >> 'h10) & gba_mask);
-        c10$2 = 32'((w10 >> 'h20) & gba_mask);
-        c10$3 = 32'((w10 >> 'h30) & gba_mask);
-        c01$0 = 32'(w01 & r_mask);
-        c01$1 = 32'((w01 >> 'h10) & gba_mask);
-        c01$2 = 32'((w01 >> 'h20) & gba_mask);
-        c01$3 = 32'((w01 >> 'h30) & gba_mask);
-        c11$0 = 32'(w11 & r_mask);
-        c11$1 = 32'((w11 >> 'h10) & gba_mask);
-        c11$2 = 32'((w11 >> 'h20) & gba_mask);
-        c11$3 = 32'((w11 >> 'h30) & gba_mask);
+        w00$1 = a$0;
+        w10$1 = a$0;
+        w01$1 = a$0;
+        if (sel$1['h2]) begin
+            if (sel$1['h1]) begin
+                w10$1 = a$2;
+            end
+            else begin
+                w10$1 = a$1;
+            end
+        end
+        if (sel$1['h4]) begin
+            if (sel$1['h3]) begin
+                w01$1 = a$4;
+            end
+            else begin
+                w01$1 = a$3;
+            end
+        end
+        w11$1 = w01$1;
+        if (sel$1['h2]) begin
+            w11$1 = w10$1;
+            if (sel$1['h4]) begin
+                if (sel$1['h1]) begin
+                    if (sel$1['h3]) begin
+                        w11$1 = a$8;
+                    end
+                    else begin
+                        w11$1 = a$6;
+                    end
+                end
+                else if (sel$1['h3]) begin
+                    w11$1 = a$7;
+                end
+                else begin
+                    w11$1 = a$5;
+                end
+            end
+        end
+        if (sel$1['h5]) begin
+            w10$1 = reset;
+            w11$1 = reset;
+        end
+        if (sel$1['h6]) begin
+            w01$1 = reset;
+            w11$1 = reset;
+        end
+        if (sel$1['h0]) begin
+            w00$1 = reset;
+            w10$1 = reset;
+            w01$1 = reset;
+            w11$1 = reset;
+        end
+        w00$2 = a$0;
+        w10$2 = a$0;
+        w01$2 = a$0;
+        if (sel$2['h2]) begin
+            if (sel$2['h1]) begin
+                w10$2 = a$2;
+            end
+            else begin
+                w10$2 = a$1;
+            end
+        end
+        if (sel$2['h4]) begin
+            if (sel$2['h3]) begin
+                w01$2 = a$4;
+            end
+            else begin
+                w01$2 = a$3;
+            end
+        end
+        w11$2 = w01$2;
+        if (sel$2['h2]) begin
+            w11$2 = w10$2;
+            if (sel$2['h4]) begin
+                if (sel$2['h1]) begin
+                    if (sel$2['h3]) begin
+                        w11$2 = a$8;
+                    end
+                    else begin
+                        w11$2 = a$6;
+                    end
+                end
+                else if (sel$2['h3]) begin
+                    w11$2 = a$7;
+                end
+                else begin
+                    w11$2 = a$5;
+                end
+            end
+        end
+        if (sel$2['h5]) begin
+            w10$2 = reset;
+            w11$2 = reset;
+        end
+        if (sel$2['h6]) begin
+            w01$2 = reset;
+            w11$2 = reset;
+        end
+        if (sel$2['h0]) begin
+            w00$2 = reset;
+            w10$2 = reset;
+            w01$2 = reset;
+            w11$2 = reset;
+        end
+        w00$3 = a$0;
+        w10$3 = a$0;
+        w01$3 = a$0;
+        if (sel$3['h2]) begin
+            if (sel$3['h1]) begin
+                w10$3 = a$2;
+            end
+            else begin
+                w10$3 = a$1;
+            end
+        end
+        if (sel$3['h4]) begin
+            if (sel$3['h3]) begin
+                w01$3 = a$4;
+            end
+            else begin
+                w01$3 = a$3;
+            end
+        end
+        w11$3 = w01$3;
+        if (sel$3['h2]) begin
+            w11$3 = w10$3;
+            if (sel$3['h4]) begin
+                if (sel$3['h1]) begin
+                    if (sel$3['h3]) begin
+                        w11$3 = a$8;
+                    end
+                    else begin
+                        w11$3 = a$6;
+                    end
+                end
+                else if (sel$3['h3]) begin
+                    w11$3 = a$7;
+                end
+                else begin
+                    w11$3 = a$5;
+                end
+            end
+        end
+        if (sel$3['h5]) begin
+            w10$3 = reset;
+            w11$3 = reset;
+        end
+        if (sel$3['h6]) begin
+            w01$3 = reset;
+            w11$3 = reset;
+        end
+        if (sel$3['h0]) begin
+            w00$3 = reset;
+            w10$3 = reset;
+            w01$3 = reset;
+            w11$3 = reset;
+        end
+        c00$0 = 32'(w00$0 & r_mask);
+        c00$1 = 32'((w00$1 >> 'h10) & gba_mask);
+        c00$2 = 32'((w00$2 >> 'h20) & gba_mask);
+        c00$3 = 32'((w00$3 >> 'h30) & gba_mask);
+        c10$0 = 32'(w10$0 & r_mask);
+        c10$1 = 32'((w10$1 >> 'h10) & gba_mask);
+        c10$2 = 32'((w10$2 >> 'h20) & gba_mask);
+        c10$3 = 32'((w10$3 >> 'h30) & gba_mask);
+        c01$0 = 32'(w01$0 & r_mask);
+        c01$1 = 32'((w01$1 >> 'h10) & gba_mask);
+        c01$2 = 32'((w01$2 >> 'h20) & gba_mask);
+        c01$3 = 32'((w01$3 >> 'h30) & gba_mask);
+        c11$0 = 32'(w11$0 & r_mask);
+        c11$1 = 32'((w11$1 >> 'h10) & gba_mask);
+        c11$2 = 32'((w11$2 >> 'h20) & gba_mask);
+        c11$3 = 32'((w11$3 >> 'h30) & gba_mask);
     end
     
 endmodule // top$lanes$1$cells
-module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,dx_mag_t,dy_mag_t,sel_t$0,sel_t$1,sel_t$2,sel_t$3,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -7190,13 +7483,12 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [63:0] dims;
     input wire  [15:0] coord_mask;
     output reg  [15:0] x_t;
-    output reg  sr_t;
-    output reg  dx_neg_t;
     output reg  [15:0] dx_mag_t;
-    output reg  dy_neg_t;
     output reg  [15:0] dy_mag_t;
-    output reg  x_out_t;
-    output reg  y_out_t;
+    output reg  [6:0] sel_t$0;
+    output reg  [6:0] sel_t$1;
+    output reg  [6:0] sel_t$2;
+    output reg  [6:0] sel_t$3;
     output reg  res_beat;
     output reg  res_valid;
     output reg  px_valid;
@@ -7211,12 +7503,18 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] ny_last$d;
     wire  [15:0] ny_last$q;
     reg  ny_last$clock;
-    reg  x_out_q$d;
-    wire  x_out_q$q;
-    reg  x_out_q$clock;
-    reg  y_out_q$d;
-    wire  y_out_q$q;
-    reg  y_out_q$clock;
+    reg  [6:0] sel_q$0$d;
+    wire  [6:0] sel_q$0$q;
+    reg  sel_q$0$clock;
+    reg  [6:0] sel_q$1$d;
+    wire  [6:0] sel_q$1$q;
+    reg  sel_q$1$clock;
+    reg  [6:0] sel_q$2$d;
+    wire  [6:0] sel_q$2$q;
+    reg  sel_q$2$clock;
+    reg  [6:0] sel_q$3$d;
+    wire  [6:0] sel_q$3$q;
+    reg  sel_q$3$clock;
     reg  [15:0] x_q$0$d;
     wire  [15:0] x_q$0$q;
     reg  x_q$0$clock;
@@ -7301,9 +7599,6 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  sr_q$8$d;
     wire  sr_q$8$q;
     reg  sr_q$8$clock;
-    reg  sr_q$9$d;
-    wire  sr_q$9$q;
-    reg  sr_q$9$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
@@ -7331,9 +7626,6 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dxn_q$8$d;
     wire  dxn_q$8$q;
     reg  dxn_q$8$clock;
-    reg  dxn_q$9$d;
-    wire  dxn_q$9$q;
-    reg  dxn_q$9$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
@@ -7391,9 +7683,6 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dyn_q$8$d;
     wire  dyn_q$8$q;
     reg  dyn_q$8$clock;
-    reg  dyn_q$9$d;
-    wire  dyn_q$9$q;
-    reg  dyn_q$9$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
@@ -7803,6 +8092,13 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     wire  [2:0] face_q$20$q;
     reg  face_q$20$clock;
     
+    // Local signals
+    reg  x_out;
+    reg  y_out;
+    reg  dx_nz;
+    reg  dy_nz;
+    reg  [6:0] sel;
+    
     // Sub module instances
     top$lanes$1$ctl$nx_last nx_last(
         .d(nx_last$d),
@@ -7814,15 +8110,25 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(ny_last$q),
         .clock(ny_last$clock)
     );
-    top$lanes$1$ctl$x_out_q x_out_q(
-        .d(x_out_q$d),
-        .q(x_out_q$q),
-        .clock(x_out_q$clock)
+    top$lanes$1$ctl$sel_q$0 sel_q$0(
+        .d(sel_q$0$d),
+        .q(sel_q$0$q),
+        .clock(sel_q$0$clock)
     );
-    top$lanes$1$ctl$y_out_q y_out_q(
-        .d(y_out_q$d),
-        .q(y_out_q$q),
-        .clock(y_out_q$clock)
+    top$lanes$1$ctl$sel_q$1 sel_q$1(
+        .d(sel_q$1$d),
+        .q(sel_q$1$q),
+        .clock(sel_q$1$clock)
+    );
+    top$lanes$1$ctl$sel_q$2 sel_q$2(
+        .d(sel_q$2$d),
+        .q(sel_q$2$q),
+        .clock(sel_q$2$clock)
+    );
+    top$lanes$1$ctl$sel_q$3 sel_q$3(
+        .d(sel_q$3$d),
+        .q(sel_q$3$q),
+        .clock(sel_q$3$clock)
     );
     top$lanes$1$ctl$x_q$0 x_q$0(
         .d(x_q$0$d),
@@ -7964,11 +8270,6 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$8$q),
         .clock(sr_q$8$clock)
     );
-    top$lanes$1$ctl$sr_q$9 sr_q$9(
-        .d(sr_q$9$d),
-        .q(sr_q$9$q),
-        .clock(sr_q$9$clock)
-    );
     top$lanes$1$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -8013,11 +8314,6 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$8$d),
         .q(dxn_q$8$q),
         .clock(dxn_q$8$clock)
-    );
-    top$lanes$1$ctl$dxn_q$9 dxn_q$9(
-        .d(dxn_q$9$d),
-        .q(dxn_q$9$q),
-        .clock(dxn_q$9$clock)
     );
     top$lanes$1$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -8113,11 +8409,6 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dyn_q$8$d),
         .q(dyn_q$8$q),
         .clock(dyn_q$8$clock)
-    );
-    top$lanes$1$ctl$dyn_q$9 dyn_q$9(
-        .d(dyn_q$9$d),
-        .q(dyn_q$9$q),
-        .clock(dyn_q$9$clock)
     );
     top$lanes$1$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
@@ -8804,71 +9095,37 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     always @(*) begin
         nx_last$clock = clock;
         ny_last$clock = clock;
-        x_out_q$clock = clock;
-        y_out_q$clock = clock;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
-        x_out_q$d = x_out_q$q;
-        y_out_q$d = y_out_q$q;
         x_q$0$clock = clock;
-        sr_q$0$clock = clock;
-        dxn_q$0$clock = clock;
         dxm_q$0$clock = clock;
-        dyn_q$0$clock = clock;
         dym_q$0$clock = clock;
         x_q$1$clock = clock;
-        sr_q$1$clock = clock;
-        dxn_q$1$clock = clock;
         dxm_q$1$clock = clock;
-        dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
         x_q$2$clock = clock;
-        sr_q$2$clock = clock;
-        dxn_q$2$clock = clock;
         dxm_q$2$clock = clock;
-        dyn_q$2$clock = clock;
         dym_q$2$clock = clock;
         x_q$3$clock = clock;
-        sr_q$3$clock = clock;
-        dxn_q$3$clock = clock;
         dxm_q$3$clock = clock;
-        dyn_q$3$clock = clock;
         dym_q$3$clock = clock;
         x_q$4$clock = clock;
-        sr_q$4$clock = clock;
-        dxn_q$4$clock = clock;
         dxm_q$4$clock = clock;
-        dyn_q$4$clock = clock;
         dym_q$4$clock = clock;
         x_q$5$clock = clock;
-        sr_q$5$clock = clock;
-        dxn_q$5$clock = clock;
         dxm_q$5$clock = clock;
-        dyn_q$5$clock = clock;
         dym_q$5$clock = clock;
         x_q$6$clock = clock;
-        sr_q$6$clock = clock;
-        dxn_q$6$clock = clock;
         dxm_q$6$clock = clock;
-        dyn_q$6$clock = clock;
         dym_q$6$clock = clock;
         x_q$7$clock = clock;
-        sr_q$7$clock = clock;
-        dxn_q$7$clock = clock;
         dxm_q$7$clock = clock;
-        dyn_q$7$clock = clock;
         dym_q$7$clock = clock;
         x_q$8$clock = clock;
-        sr_q$8$clock = clock;
-        dxn_q$8$clock = clock;
         dxm_q$8$clock = clock;
-        dyn_q$8$clock = clock;
         dym_q$8$clock = clock;
         x_q$9$clock = clock;
-        sr_q$9$clock = clock;
-        dxn_q$9$clock = clock;
         dxm_q$9$clock = clock;
-        dyn_q$9$clock = clock;
         dym_q$9$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
@@ -9004,104 +9261,138 @@ module top$lanes$1$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dyn_q$0$d = dy_neg;
         dym_q$0$d = dy_mag;
         x_q$1$d = x_q$0$q;
-        sr_q$1$d = sr_q$0$q;
-        dxn_q$1$d = dxn_q$0$q;
         dxm_q$1$d = dxm_q$0$q;
-        dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
         x_q$2$d = x_q$1$q;
-        sr_q$2$d = sr_q$1$q;
-        dxn_q$2$d = dxn_q$1$q;
         dxm_q$2$d = dxm_q$1$q;
-        dyn_q$2$d = dyn_q$1$q;
         dym_q$2$d = dym_q$1$q;
         x_q$3$d = x_q$2$q;
-        sr_q$3$d = sr_q$2$q;
-        dxn_q$3$d = dxn_q$2$q;
         dxm_q$3$d = dxm_q$2$q;
-        dyn_q$3$d = dyn_q$2$q;
         dym_q$3$d = dym_q$2$q;
         x_q$4$d = x_q$3$q;
-        sr_q$4$d = sr_q$3$q;
-        dxn_q$4$d = dxn_q$3$q;
         dxm_q$4$d = dxm_q$3$q;
-        dyn_q$4$d = dyn_q$3$q;
         dym_q$4$d = dym_q$3$q;
         x_q$5$d = x_q$4$q;
-        sr_q$5$d = sr_q$4$q;
-        dxn_q$5$d = dxn_q$4$q;
         dxm_q$5$d = dxm_q$4$q;
-        dyn_q$5$d = dyn_q$4$q;
         dym_q$5$d = dym_q$4$q;
         x_q$6$d = x_q$5$q;
-        sr_q$6$d = sr_q$5$q;
-        dxn_q$6$d = dxn_q$5$q;
         dxm_q$6$d = dxm_q$5$q;
-        dyn_q$6$d = dyn_q$5$q;
         dym_q$6$d = dym_q$5$q;
         x_q$7$d = x_q$6$q;
-        sr_q$7$d = sr_q$6$q;
-        dxn_q$7$d = dxn_q$6$q;
         dxm_q$7$d = dxm_q$6$q;
-        dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
         x_q$8$d = x_q$7$q;
-        sr_q$8$d = sr_q$7$q;
-        dxn_q$8$d = dxn_q$7$q;
         dxm_q$8$d = dxm_q$7$q;
-        dyn_q$8$d = dyn_q$7$q;
         dym_q$8$d = dym_q$7$q;
         x_q$9$d = x_q$8$q;
-        sr_q$9$d = sr_q$8$q;
-        dxn_q$9$d = dxn_q$8$q;
         dxm_q$9$d = dxm_q$8$q;
-        dyn_q$9$d = dyn_q$8$q;
         dym_q$9$d = dym_q$8$q;
         y_q$0$clock = clock;
+        sr_q$0$clock = clock;
+        dxn_q$0$clock = clock;
+        dyn_q$0$clock = clock;
         y_q$1$clock = clock;
+        sr_q$1$clock = clock;
+        dxn_q$1$clock = clock;
+        dyn_q$1$clock = clock;
         y_q$2$clock = clock;
+        sr_q$2$clock = clock;
+        dxn_q$2$clock = clock;
+        dyn_q$2$clock = clock;
         y_q$3$clock = clock;
+        sr_q$3$clock = clock;
+        dxn_q$3$clock = clock;
+        dyn_q$3$clock = clock;
         y_q$4$clock = clock;
+        sr_q$4$clock = clock;
+        dxn_q$4$clock = clock;
+        dyn_q$4$clock = clock;
         y_q$5$clock = clock;
+        sr_q$5$clock = clock;
+        dxn_q$5$clock = clock;
+        dyn_q$5$clock = clock;
         y_q$6$clock = clock;
+        sr_q$6$clock = clock;
+        dxn_q$6$clock = clock;
+        dyn_q$6$clock = clock;
         y_q$7$clock = clock;
+        sr_q$7$clock = clock;
+        dxn_q$7$clock = clock;
+        dyn_q$7$clock = clock;
         y_q$8$clock = clock;
+        sr_q$8$clock = clock;
+        dxn_q$8$clock = clock;
+        dyn_q$8$clock = clock;
         y_q$1$d = y_q$0$q;
+        sr_q$1$d = sr_q$0$q;
+        dxn_q$1$d = dxn_q$0$q;
+        dyn_q$1$d = dyn_q$0$q;
         y_q$2$d = y_q$1$q;
+        sr_q$2$d = sr_q$1$q;
+        dxn_q$2$d = dxn_q$1$q;
+        dyn_q$2$d = dyn_q$1$q;
         y_q$3$d = y_q$2$q;
+        sr_q$3$d = sr_q$2$q;
+        dxn_q$3$d = dxn_q$2$q;
+        dyn_q$3$d = dyn_q$2$q;
         y_q$4$d = y_q$3$q;
+        sr_q$4$d = sr_q$3$q;
+        dxn_q$4$d = dxn_q$3$q;
+        dyn_q$4$d = dyn_q$3$q;
         y_q$5$d = y_q$4$q;
+        sr_q$5$d = sr_q$4$q;
+        dxn_q$5$d = dxn_q$4$q;
+        dyn_q$5$d = dyn_q$4$q;
         y_q$6$d = y_q$5$q;
+        sr_q$6$d = sr_q$5$q;
+        dxn_q$6$d = dxn_q$5$q;
+        dyn_q$6$d = dyn_q$5$q;
         y_q$7$d = y_q$6$q;
+        sr_q$7$d = sr_q$6$q;
+        dxn_q$7$d = dxn_q$6$q;
+        dyn_q$7$d = dyn_q$6$q;
         y_q$8$d = y_q$7$q;
+        sr_q$8$d = sr_q$7$q;
+        dxn_q$8$d = dxn_q$7$q;
+        dyn_q$8$d = dyn_q$7$q;
         x_t = x_q$9$q;
-        sr_t = sr_q$9$q;
-        dx_neg_t = dxn_q$9$q;
         dx_mag_t = dxm_q$9$q;
-        dy_neg_t = dyn_q$9$q;
         dy_mag_t = dym_q$9$q;
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
-        x_out_q$d = 1'b0;
+        x_out = 1'b0;
         if (dxm_q$8$q != 'h0) begin
             if (dxn_q$8$q) begin
-                x_out_q$d = x_q$8$q == nx_last$q;
+                x_out = x_q$8$q == nx_last$q;
             end
             else begin
-                x_out_q$d = x_q$8$q == 'h0;
+                x_out = x_q$8$q == 'h0;
             end
         end
-        y_out_q$d = 1'b0;
+        y_out = 1'b0;
         if (dym_q$8$q != 'h0) begin
             if (dyn_q$8$q) begin
-                y_out_q$d = y_q$8$q == ny_last$q;
+                y_out = y_q$8$q == ny_last$q;
             end
             else begin
-                y_out_q$d = y_q$8$q == 'h0;
+                y_out = y_q$8$q == 'h0;
             end
         end
-        x_out_t = x_out_q$q;
-        y_out_t = y_out_q$q;
+        dx_nz = dxm_q$8$q != 'h0;
+        dy_nz = dym_q$8$q != 'h0;
+        sel = 7'(sr_q$8$q) | (7'(dxn_q$8$q) << 'h1) | (7'(dx_nz) << 'h2) | (7'(dyn_q$8$q) << 'h3) | (7'(dy_nz) << 'h4) | (7'(x_out) << 'h5) | (7'(y_out) << 'h6);
+        sel_q$0$clock = clock;
+        sel_q$0$d = sel;
+        sel_t$0 = sel_q$0$q;
+        sel_q$1$clock = clock;
+        sel_q$1$d = sel;
+        sel_t$1 = sel_q$1$q;
+        sel_q$2$clock = clock;
+        sel_q$2$d = sel;
+        sel_t$2 = sel_q$2$q;
+        sel_q$3$clock = clock;
+        sel_q$3$d = sel;
+        sel_t$3 = sel_q$3$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -10274,23 +10565,6 @@ module top$lanes$1$ctl$dxn_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dxn_q$8
-module top$lanes$1$ctl$dxn_q$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$dxn_q$9
 module top$lanes$1$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -10614,23 +10888,6 @@ module top$lanes$1$ctl$dyn_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$dyn_q$8
-module top$lanes$1$ctl$dyn_q$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$dyn_q$9
 module top$lanes$1$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -11736,6 +11993,74 @@ module top$lanes$1$ctl$pad_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$pad_q$9
+module top$lanes$1$ctl$sel_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$ctl$sel_q$0
+module top$lanes$1$ctl$sel_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$ctl$sel_q$1
+module top$lanes$1$ctl$sel_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$ctl$sel_q$2
+module top$lanes$1$ctl$sel_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$ctl$sel_q$3
 module top$lanes$1$ctl$sr_q$0(d,q,clock);
     
     // Module arguments
@@ -11889,23 +12214,6 @@ module top$lanes$1$ctl$sr_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$sr_q$8
-module top$lanes$1$ctl$sr_q$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$sr_q$9
 module top$lanes$1$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -12263,23 +12571,6 @@ module top$lanes$1$ctl$v_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$v_q$9
-module top$lanes$1$ctl$x_out_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$x_out_q
 module top$lanes$1$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -12450,23 +12741,6 @@ module top$lanes$1$ctl$x_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$1$ctl$x_q$9
-module top$lanes$1$ctl$y_out_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$ctl$y_out_q
 module top$lanes$1$ctl$y_q$0(d,q,clock);
     
     // Module arguments
@@ -12919,13 +13193,12 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [63:0] ctl$dims;
     reg  [15:0] ctl$coord_mask;
     wire  [15:0] ctl$x_t;
-    wire  ctl$sr_t;
-    wire  ctl$dx_neg_t;
     wire  [15:0] ctl$dx_mag_t;
-    wire  ctl$dy_neg_t;
     wire  [15:0] ctl$dy_mag_t;
-    wire  ctl$x_out_t;
-    wire  ctl$y_out_t;
+    wire  [6:0] ctl$sel_t$0;
+    wire  [6:0] ctl$sel_t$1;
+    wire  [6:0] ctl$sel_t$2;
+    wire  [6:0] ctl$sel_t$3;
     wire  ctl$res_beat;
     wire  ctl$res_valid;
     wire  ctl$px_valid;
@@ -12978,13 +13251,10 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [63:0] cells$a$6;
     reg  [63:0] cells$a$7;
     reg  [63:0] cells$a$8;
-    reg  cells$sr;
-    reg  cells$dx_neg;
-    reg  [15:0] cells$dx_mag;
-    reg  cells$dy_neg;
-    reg  [15:0] cells$dy_mag;
-    reg  cells$x_out;
-    reg  cells$y_out;
+    reg  [6:0] cells$sel$0;
+    reg  [6:0] cells$sel$1;
+    reg  [6:0] cells$sel$2;
+    reg  [6:0] cells$sel$3;
     wire  [31:0] cells$c00$0;
     wire  [31:0] cells$c00$1;
     wire  [31:0] cells$c00$2;
@@ -13135,13 +13405,12 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dims(ctl$dims),
         .coord_mask(ctl$coord_mask),
         .x_t(ctl$x_t),
-        .sr_t(ctl$sr_t),
-        .dx_neg_t(ctl$dx_neg_t),
         .dx_mag_t(ctl$dx_mag_t),
-        .dy_neg_t(ctl$dy_neg_t),
         .dy_mag_t(ctl$dy_mag_t),
-        .x_out_t(ctl$x_out_t),
-        .y_out_t(ctl$y_out_t),
+        .sel_t$0(ctl$sel_t$0),
+        .sel_t$1(ctl$sel_t$1),
+        .sel_t$2(ctl$sel_t$2),
+        .sel_t$3(ctl$sel_t$3),
         .res_beat(ctl$res_beat),
         .res_valid(ctl$res_valid),
         .px_valid(ctl$px_valid),
@@ -13198,13 +13467,10 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
         .a$6(cells$a$6),
         .a$7(cells$a$7),
         .a$8(cells$a$8),
-        .sr(cells$sr),
-        .dx_neg(cells$dx_neg),
-        .dx_mag(cells$dx_mag),
-        .dy_neg(cells$dy_neg),
-        .dy_mag(cells$dy_mag),
-        .x_out(cells$x_out),
-        .y_out(cells$y_out),
+        .sel$0(cells$sel$0),
+        .sel$1(cells$sel$1),
+        .sel$2(cells$sel$2),
+        .sel$3(cells$sel$3),
         .c00$0(cells$c00$0),
         .c00$1(cells$c00$1),
         .c00$2(cells$c00$2),
@@ -13364,13 +13630,10 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
         cells$a$7 = taps$a$7;
         cells$a$8 = taps$a$8;
         cells$order = order;
-        cells$x_out = ctl$x_out_t;
-        cells$y_out = ctl$y_out_t;
-        cells$sr = ctl$sr_t;
-        cells$dx_neg = ctl$dx_neg_t;
-        cells$dx_mag = ctl$dx_mag_t;
-        cells$dy_neg = ctl$dy_neg_t;
-        cells$dy_mag = ctl$dy_mag_t;
+        cells$sel$0 = ctl$sel_t$0;
+        cells$sel$1 = ctl$sel_t$1;
+        cells$sel$2 = ctl$sel_t$2;
+        cells$sel$3 = ctl$sel_t$3;
         bilinear$clock = clock;
         bilinear$c00$0 = cells$c00$0;
         bilinear$c10$0 = cells$c10$0;
@@ -13413,7 +13676,7 @@ module top$lanes$2(clock,host_write,host_address,host_data,dims,beats,order,beat
     end
     
 endmodule // top$lanes$2
-module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_out,y_out,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,order);
+module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sel$0,sel$1,sel$2,sel$3,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,order);
     
     // Module arguments
     input wire  [63:0] a$0;
@@ -13425,13 +13688,10 @@ module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     input wire  [63:0] a$6;
     input wire  [63:0] a$7;
     input wire  [63:0] a$8;
-    input wire  sr;
-    input wire  dx_neg;
-    input wire  [15:0] dx_mag;
-    input wire  dy_neg;
-    input wire  [15:0] dy_mag;
-    input wire  x_out;
-    input wire  y_out;
+    input wire  [6:0] sel$0;
+    input wire  [6:0] sel$1;
+    input wire  [6:0] sel$2;
+    input wire  [6:0] sel$3;
     output reg  [31:0] c00$0;
     output reg  [31:0] c00$1;
     output reg  [31:0] c00$2;
@@ -13457,10 +13717,22 @@ module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     
     // Local signals
     reg  [63:0] reset;
-    reg  [63:0] w00;
-    reg  [63:0] w10;
-    reg  [63:0] w01;
-    reg  [63:0] w11;
+    reg  [63:0] w00$0;
+    reg  [63:0] w00$1;
+    reg  [63:0] w00$2;
+    reg  [63:0] w00$3;
+    reg  [63:0] w10$0;
+    reg  [63:0] w10$1;
+    reg  [63:0] w10$2;
+    reg  [63:0] w10$3;
+    reg  [63:0] w01$0;
+    reg  [63:0] w01$1;
+    reg  [63:0] w01$2;
+    reg  [63:0] w01$3;
+    reg  [63:0] w11$0;
+    reg  [63:0] w11$1;
+    reg  [63:0] w11$2;
+    reg  [63:0] w11$3;
     
     // Update code
     always @(*) begin
@@ -13468,80 +13740,238 @@ module top$lanes$2$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
         if (order['h1]) begin
             reset = vmax;
         end
-        w00 = a$0;
-        w10 = a$0;
-        w01 = a$0;
-        w11 = a$0;
-        if (dx_mag != 'h0) begin
-            if (dx_neg) begin
-                w10 = a$2;
+        w00$0 = a$0;
+        w10$0 = a$0;
+        w01$0 = a$0;
+        if (sel$0['h2]) begin
+            if (sel$0['h1]) begin
+                w10$0 = a$2;
             end
             else begin
-                w10 = a$1;
+                w10$0 = a$1;
             end
         end
-        if (dy_mag != 'h0) begin
-            if (dy_neg) begin
-                w01 = a$4;
+        if (sel$0['h4]) begin
+            if (sel$0['h3]) begin
+                w01$0 = a$4;
             end
             else begin
-                w01 = a$3;
+                w01$0 = a$3;
             end
         end
-        w11 = w01;
-        if (dx_mag != 'h0) begin
-            w11 = w10;
-            if (dy_mag != 'h0) begin
-                if (dx_neg) begin
-                    if (dy_neg) begin
-                        w11 = a$8;
+        w11$0 = w01$0;
+        if (sel$0['h2]) begin
+            w11$0 = w10$0;
+            if (sel$0['h4]) begin
+                if (sel$0['h1]) begin
+                    if (sel$0['h3]) begin
+                        w11$0 = a$8;
                     end
                     else begin
-                        w11 = a$6;
+                        w11$0 = a$6;
                     end
                 end
-                else if (dy_neg) begin
-                    w11 = a$7;
+                else if (sel$0['h3]) begin
+                    w11$0 = a$7;
                 end
                 else begin
-                    w11 = a$5;
+                    w11$0 = a$5;
                 end
             end
         end
-        if (x_out) begin
-            w10 = reset;
-            w11 = reset;
+        if (sel$0['h5]) begin
+            w10$0 = reset;
+            w11$0 = reset;
         end
-        if (y_out) begin
-            w01 = reset;
-            w11 = reset;
+        if (sel$0['h6]) begin
+            w01$0 = reset;
+            w11$0 = reset;
         end
-        if (sr) begin
-            w00 = reset;
-            w10 = reset;
-            w01 = reset;
-            w11 = reset;
+        if (sel$0['h0]) begin
+            w00$0 = reset;
+            w10$0 = reset;
+            w01$0 = reset;
+            w11$0 = reset;
         end
-        c00$0 = 32'(w00 & r_mask);
-        c00$1 = 32'((w00 >> 'h10) & gba_mask);
-        c00$2 = 32'((w00 >> 'h20) & gba_mask);
-        c00$3 = 32'((w00 >> 'h30) & gba_mask);
-        c10$0 = 32'(w10 & r_mask);
-        c10$1 = 32'((w10 >> 'h10) & gba_mask);
-        c10$2 = 32'((w10 >> 'h20) & gba_mask);
-        c10$3 = 32'((w10 >> 'h30) & gba_mask);
-        c01$0 = 32'(w01 & r_mask);
-        c01$1 = 32'((w01 >> 'h10) & gba_mask);
-        c01$2 = 32'((w01 >> 'h20) & gba_mask);
-        c01$3 = 32'((w01 >> 'h30) & gba_mask);
-        c11$0 = 32'(w11 & r_mask);
-        c11$1 = 32'((w11 >> 'h10) & gba_mask);
-        c11$2 = 32'((w11 >> 'h20) & gba_mask);
-        c11$3 = 32'((w11 >> 'h30) & gba_mask);
+        w00$1 = a$0;
+        w10$1 = a$0;
+        w01$1 = a$0;
+        if (sel$1['h2]) begin
+            if (sel$1['h1]) begin
+                w10$1 = a$2;
+            end
+            else begin
+                w10$1 = a$1;
+            end
+        end
+        if (sel$1['h4]) begin
+            if (sel$1['h3]) begin
+                w01$1 = a$4;
+            end
+            else begin
+                w01$1 = a$3;
+            end
+        end
+        w11$1 = w01$1;
+        if (sel$1['h2]) begin
+            w11$1 = w10$1;
+            if (sel$1['h4]) begin
+                if (sel$1['h1]) begin
+                    if (sel$1['h3]) begin
+                        w11$1 = a$8;
+                    end
+                    else begin
+                        w11$1 = a$6;
+                    end
+                end
+                else if (sel$1['h3]) begin
+                    w11$1 = a$7;
+                end
+                else begin
+                    w11$1 = a$5;
+                end
+            end
+        end
+        if (sel$1['h5]) begin
+            w10$1 = reset;
+            w11$1 = reset;
+        end
+        if (sel$1['h6]) begin
+            w01$1 = reset;
+            w11$1 = reset;
+        end
+        if (sel$1['h0]) begin
+            w00$1 = reset;
+            w10$1 = reset;
+            w01$1 = reset;
+            w11$1 = reset;
+        end
+        w00$2 = a$0;
+        w10$2 = a$0;
+        w01$2 = a$0;
+        if (sel$2['h2]) begin
+            if (sel$2['h1]) begin
+                w10$2 = a$2;
+            end
+            else begin
+                w10$2 = a$1;
+            end
+        end
+        if (sel$2['h4]) begin
+            if (sel$2['h3]) begin
+                w01$2 = a$4;
+            end
+            else begin
+                w01$2 = a$3;
+            end
+        end
+        w11$2 = w01$2;
+        if (sel$2['h2]) begin
+            w11$2 = w10$2;
+            if (sel$2['h4]) begin
+                if (sel$2['h1]) begin
+                    if (sel$2['h3]) begin
+                        w11$2 = a$8;
+                    end
+                    else begin
+                        w11$2 = a$6;
+                    end
+                end
+                else if (sel$2['h3]) begin
+                    w11$2 = a$7;
+                end
+                else begin
+                    w11$2 = a$5;
+                end
+            end
+        end
+        if (sel$2['h5]) begin
+            w10$2 = reset;
+            w11$2 = reset;
+        end
+        if (sel$2['h6]) begin
+            w01$2 = reset;
+            w11$2 = reset;
+        end
+        if (sel$2['h0]) begin
+            w00$2 = reset;
+            w10$2 = reset;
+            w01$2 = reset;
+            w11$2 = reset;
+        end
+        w00$3 = a$0;
+        w10$3 = a$0;
+        w01$3 = a$0;
+        if (sel$3['h2]) begin
+            if (sel$3['h1]) begin
+                w10$3 = a$2;
+            end
+            else begin
+                w10$3 = a$1;
+            end
+        end
+        if (sel$3['h4]) begin
+            if (sel$3['h3]) begin
+                w01$3 = a$4;
+            end
+            else begin
+                w01$3 = a$3;
+            end
+        end
+        w11$3 = w01$3;
+        if (sel$3['h2]) begin
+            w11$3 = w10$3;
+            if (sel$3['h4]) begin
+                if (sel$3['h1]) begin
+                    if (sel$3['h3]) begin
+                        w11$3 = a$8;
+                    end
+                    else begin
+                        w11$3 = a$6;
+                    end
+                end
+                else if (sel$3['h3]) begin
+                    w11$3 = a$7;
+                end
+                else begin
+                    w11$3 = a$5;
+                end
+            end
+        end
+        if (sel$3['h5]) begin
+            w10$3 = reset;
+            w11$3 = reset;
+        end
+        if (sel$3['h6]) begin
+            w01$3 = reset;
+            w11$3 = reset;
+        end
+        if (sel$3['h0]) begin
+            w00$3 = reset;
+            w10$3 = reset;
+            w01$3 = reset;
+            w11$3 = reset;
+        end
+        c00$0 = 32'(w00$0 & r_mask);
+        c00$1 = 32'((w00$1 >> 'h10) & gba_mask);
+        c00$2 = 32'((w00$2 >> 'h20) & gba_mask);
+        c00$3 = 32'((w00$3 >> 'h30) & gba_mask);
+        c10$0 = 32'(w10$0 & r_mask);
+        c10$1 = 32'((w10$1 >> 'h10) & gba_mask);
+        c10$2 = 32'((w10$2 >> 'h20) & gba_mask);
+        c10$3 = 32'((w10$3 >> 'h30) & gba_mask);
+        c01$0 = 32'(w01$0 & r_mask);
+        c01$1 = 32'((w01$1 >> 'h10) & gba_mask);
+        c01$2 = 32'((w01$2 >> 'h20) & gba_mask);
+        c01$3 = 32'((w01$3 >> 'h30) & gba_mask);
+        c11$0 = 32'(w11$0 & r_mask);
+        c11$1 = 32'((w11$1 >> 'h10) & gba_mask);
+        c11$2 = 32'((w11$2 >> 'h20) & gba_mask);
+        c11$3 = 32'((w11$3 >> 'h30) & gba_mask);
     end
     
 endmodule // top$lanes$2$cells
-module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,dx_mag_t,dy_mag_t,sel_t$0,sel_t$1,sel_t$2,sel_t$3,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -13561,13 +13991,12 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [63:0] dims;
     input wire  [15:0] coord_mask;
     output reg  [15:0] x_t;
-    output reg  sr_t;
-    output reg  dx_neg_t;
     output reg  [15:0] dx_mag_t;
-    output reg  dy_neg_t;
     output reg  [15:0] dy_mag_t;
-    output reg  x_out_t;
-    output reg  y_out_t;
+    output reg  [6:0] sel_t$0;
+    output reg  [6:0] sel_t$1;
+    output reg  [6:0] sel_t$2;
+    output reg  [6:0] sel_t$3;
     output reg  res_beat;
     output reg  res_valid;
     output reg  px_valid;
@@ -13582,12 +14011,18 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] ny_last$d;
     wire  [15:0] ny_last$q;
     reg  ny_last$clock;
-    reg  x_out_q$d;
-    wire  x_out_q$q;
-    reg  x_out_q$clock;
-    reg  y_out_q$d;
-    wire  y_out_q$q;
-    reg  y_out_q$clock;
+    reg  [6:0] sel_q$0$d;
+    wire  [6:0] sel_q$0$q;
+    reg  sel_q$0$clock;
+    reg  [6:0] sel_q$1$d;
+    wire  [6:0] sel_q$1$q;
+    reg  sel_q$1$clock;
+    reg  [6:0] sel_q$2$d;
+    wire  [6:0] sel_q$2$q;
+    reg  sel_q$2$clock;
+    reg  [6:0] sel_q$3$d;
+    wire  [6:0] sel_q$3$q;
+    reg  sel_q$3$clock;
     reg  [15:0] x_q$0$d;
     wire  [15:0] x_q$0$q;
     reg  x_q$0$clock;
@@ -13672,9 +14107,6 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  sr_q$8$d;
     wire  sr_q$8$q;
     reg  sr_q$8$clock;
-    reg  sr_q$9$d;
-    wire  sr_q$9$q;
-    reg  sr_q$9$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
@@ -13702,9 +14134,6 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dxn_q$8$d;
     wire  dxn_q$8$q;
     reg  dxn_q$8$clock;
-    reg  dxn_q$9$d;
-    wire  dxn_q$9$q;
-    reg  dxn_q$9$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
@@ -13762,9 +14191,6 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dyn_q$8$d;
     wire  dyn_q$8$q;
     reg  dyn_q$8$clock;
-    reg  dyn_q$9$d;
-    wire  dyn_q$9$q;
-    reg  dyn_q$9$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
@@ -14174,6 +14600,13 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     wire  [2:0] face_q$20$q;
     reg  face_q$20$clock;
     
+    // Local signals
+    reg  x_out;
+    reg  y_out;
+    reg  dx_nz;
+    reg  dy_nz;
+    reg  [6:0] sel;
+    
     // Sub module instances
     top$lanes$2$ctl$nx_last nx_last(
         .d(nx_last$d),
@@ -14185,15 +14618,25 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(ny_last$q),
         .clock(ny_last$clock)
     );
-    top$lanes$2$ctl$x_out_q x_out_q(
-        .d(x_out_q$d),
-        .q(x_out_q$q),
-        .clock(x_out_q$clock)
+    top$lanes$2$ctl$sel_q$0 sel_q$0(
+        .d(sel_q$0$d),
+        .q(sel_q$0$q),
+        .clock(sel_q$0$clock)
     );
-    top$lanes$2$ctl$y_out_q y_out_q(
-        .d(y_out_q$d),
-        .q(y_out_q$q),
-        .clock(y_out_q$clock)
+    top$lanes$2$ctl$sel_q$1 sel_q$1(
+        .d(sel_q$1$d),
+        .q(sel_q$1$q),
+        .clock(sel_q$1$clock)
+    );
+    top$lanes$2$ctl$sel_q$2 sel_q$2(
+        .d(sel_q$2$d),
+        .q(sel_q$2$q),
+        .clock(sel_q$2$clock)
+    );
+    top$lanes$2$ctl$sel_q$3 sel_q$3(
+        .d(sel_q$3$d),
+        .q(sel_q$3$q),
+        .clock(sel_q$3$clock)
     );
     top$lanes$2$ctl$x_q$0 x_q$0(
         .d(x_q$0$d),
@@ -14335,11 +14778,6 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$8$q),
         .clock(sr_q$8$clock)
     );
-    top$lanes$2$ctl$sr_q$9 sr_q$9(
-        .d(sr_q$9$d),
-        .q(sr_q$9$q),
-        .clock(sr_q$9$clock)
-    );
     top$lanes$2$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -14384,11 +14822,6 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$8$d),
         .q(dxn_q$8$q),
         .clock(dxn_q$8$clock)
-    );
-    top$lanes$2$ctl$dxn_q$9 dxn_q$9(
-        .d(dxn_q$9$d),
-        .q(dxn_q$9$q),
-        .clock(dxn_q$9$clock)
     );
     top$lanes$2$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -14484,11 +14917,6 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dyn_q$8$d),
         .q(dyn_q$8$q),
         .clock(dyn_q$8$clock)
-    );
-    top$lanes$2$ctl$dyn_q$9 dyn_q$9(
-        .d(dyn_q$9$d),
-        .q(dyn_q$9$q),
-        .clock(dyn_q$9$clock)
     );
     top$lanes$2$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
@@ -15175,71 +15603,37 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     always @(*) begin
         nx_last$clock = clock;
         ny_last$clock = clock;
-        x_out_q$clock = clock;
-        y_out_q$clock = clock;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
-        x_out_q$d = x_out_q$q;
-        y_out_q$d = y_out_q$q;
         x_q$0$clock = clock;
-        sr_q$0$clock = clock;
-        dxn_q$0$clock = clock;
         dxm_q$0$clock = clock;
-        dyn_q$0$clock = clock;
         dym_q$0$clock = clock;
         x_q$1$clock = clock;
-        sr_q$1$clock = clock;
-        dxn_q$1$clock = clock;
         dxm_q$1$clock = clock;
-        dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
         x_q$2$clock = clock;
-        sr_q$2$clock = clock;
-        dxn_q$2$clock = clock;
         dxm_q$2$clock = clock;
-        dyn_q$2$clock = clock;
         dym_q$2$clock = clock;
         x_q$3$clock = clock;
-        sr_q$3$clock = clock;
-        dxn_q$3$clock = clock;
         dxm_q$3$clock = clock;
-        dyn_q$3$clock = clock;
         dym_q$3$clock = clock;
         x_q$4$clock = clock;
-        sr_q$4$clock = clock;
-        dxn_q$4$clock = clock;
         dxm_q$4$clock = clock;
-        dyn_q$4$clock = clock;
         dym_q$4$clock = clock;
         x_q$5$clock = clock;
-        sr_q$5$clock = clock;
-        dxn_q$5$clock = clock;
         dxm_q$5$clock = clock;
-        dyn_q$5$clock = clock;
         dym_q$5$clock = clock;
         x_q$6$clock = clock;
-        sr_q$6$clock = clock;
-        dxn_q$6$clock = clock;
         dxm_q$6$clock = clock;
-        dyn_q$6$clock = clock;
         dym_q$6$clock = clock;
         x_q$7$clock = clock;
-        sr_q$7$clock = clock;
-        dxn_q$7$clock = clock;
         dxm_q$7$clock = clock;
-        dyn_q$7$clock = clock;
         dym_q$7$clock = clock;
         x_q$8$clock = clock;
-        sr_q$8$clock = clock;
-        dxn_q$8$clock = clock;
         dxm_q$8$clock = clock;
-        dyn_q$8$clock = clock;
         dym_q$8$clock = clock;
         x_q$9$clock = clock;
-        sr_q$9$clock = clock;
-        dxn_q$9$clock = clock;
         dxm_q$9$clock = clock;
-        dyn_q$9$clock = clock;
         dym_q$9$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
@@ -15375,104 +15769,138 @@ module top$lanes$2$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dyn_q$0$d = dy_neg;
         dym_q$0$d = dy_mag;
         x_q$1$d = x_q$0$q;
-        sr_q$1$d = sr_q$0$q;
-        dxn_q$1$d = dxn_q$0$q;
         dxm_q$1$d = dxm_q$0$q;
-        dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
         x_q$2$d = x_q$1$q;
-        sr_q$2$d = sr_q$1$q;
-        dxn_q$2$d = dxn_q$1$q;
         dxm_q$2$d = dxm_q$1$q;
-        dyn_q$2$d = dyn_q$1$q;
         dym_q$2$d = dym_q$1$q;
         x_q$3$d = x_q$2$q;
-        sr_q$3$d = sr_q$2$q;
-        dxn_q$3$d = dxn_q$2$q;
         dxm_q$3$d = dxm_q$2$q;
-        dyn_q$3$d = dyn_q$2$q;
         dym_q$3$d = dym_q$2$q;
         x_q$4$d = x_q$3$q;
-        sr_q$4$d = sr_q$3$q;
-        dxn_q$4$d = dxn_q$3$q;
         dxm_q$4$d = dxm_q$3$q;
-        dyn_q$4$d = dyn_q$3$q;
         dym_q$4$d = dym_q$3$q;
         x_q$5$d = x_q$4$q;
-        sr_q$5$d = sr_q$4$q;
-        dxn_q$5$d = dxn_q$4$q;
         dxm_q$5$d = dxm_q$4$q;
-        dyn_q$5$d = dyn_q$4$q;
         dym_q$5$d = dym_q$4$q;
         x_q$6$d = x_q$5$q;
-        sr_q$6$d = sr_q$5$q;
-        dxn_q$6$d = dxn_q$5$q;
         dxm_q$6$d = dxm_q$5$q;
-        dyn_q$6$d = dyn_q$5$q;
         dym_q$6$d = dym_q$5$q;
         x_q$7$d = x_q$6$q;
-        sr_q$7$d = sr_q$6$q;
-        dxn_q$7$d = dxn_q$6$q;
         dxm_q$7$d = dxm_q$6$q;
-        dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
         x_q$8$d = x_q$7$q;
-        sr_q$8$d = sr_q$7$q;
-        dxn_q$8$d = dxn_q$7$q;
         dxm_q$8$d = dxm_q$7$q;
-        dyn_q$8$d = dyn_q$7$q;
         dym_q$8$d = dym_q$7$q;
         x_q$9$d = x_q$8$q;
-        sr_q$9$d = sr_q$8$q;
-        dxn_q$9$d = dxn_q$8$q;
         dxm_q$9$d = dxm_q$8$q;
-        dyn_q$9$d = dyn_q$8$q;
         dym_q$9$d = dym_q$8$q;
         y_q$0$clock = clock;
+        sr_q$0$clock = clock;
+        dxn_q$0$clock = clock;
+        dyn_q$0$clock = clock;
         y_q$1$clock = clock;
+        sr_q$1$clock = clock;
+        dxn_q$1$clock = clock;
+        dyn_q$1$clock = clock;
         y_q$2$clock = clock;
+        sr_q$2$clock = clock;
+        dxn_q$2$clock = clock;
+        dyn_q$2$clock = clock;
         y_q$3$clock = clock;
+        sr_q$3$clock = clock;
+        dxn_q$3$clock = clock;
+        dyn_q$3$clock = clock;
         y_q$4$clock = clock;
+        sr_q$4$clock = clock;
+        dxn_q$4$clock = clock;
+        dyn_q$4$clock = clock;
         y_q$5$clock = clock;
+        sr_q$5$clock = clock;
+        dxn_q$5$clock = clock;
+        dyn_q$5$clock = clock;
         y_q$6$clock = clock;
+        sr_q$6$clock = clock;
+        dxn_q$6$clock = clock;
+        dyn_q$6$clock = clock;
         y_q$7$clock = clock;
+        sr_q$7$clock = clock;
+        dxn_q$7$clock = clock;
+        dyn_q$7$clock = clock;
         y_q$8$clock = clock;
+        sr_q$8$clock = clock;
+        dxn_q$8$clock = clock;
+        dyn_q$8$clock = clock;
         y_q$1$d = y_q$0$q;
+        sr_q$1$d = sr_q$0$q;
+        dxn_q$1$d = dxn_q$0$q;
+        dyn_q$1$d = dyn_q$0$q;
         y_q$2$d = y_q$1$q;
+        sr_q$2$d = sr_q$1$q;
+        dxn_q$2$d = dxn_q$1$q;
+        dyn_q$2$d = dyn_q$1$q;
         y_q$3$d = y_q$2$q;
+        sr_q$3$d = sr_q$2$q;
+        dxn_q$3$d = dxn_q$2$q;
+        dyn_q$3$d = dyn_q$2$q;
         y_q$4$d = y_q$3$q;
+        sr_q$4$d = sr_q$3$q;
+        dxn_q$4$d = dxn_q$3$q;
+        dyn_q$4$d = dyn_q$3$q;
         y_q$5$d = y_q$4$q;
+        sr_q$5$d = sr_q$4$q;
+        dxn_q$5$d = dxn_q$4$q;
+        dyn_q$5$d = dyn_q$4$q;
         y_q$6$d = y_q$5$q;
+        sr_q$6$d = sr_q$5$q;
+        dxn_q$6$d = dxn_q$5$q;
+        dyn_q$6$d = dyn_q$5$q;
         y_q$7$d = y_q$6$q;
+        sr_q$7$d = sr_q$6$q;
+        dxn_q$7$d = dxn_q$6$q;
+        dyn_q$7$d = dyn_q$6$q;
         y_q$8$d = y_q$7$q;
+        sr_q$8$d = sr_q$7$q;
+        dxn_q$8$d = dxn_q$7$q;
+        dyn_q$8$d = dyn_q$7$q;
         x_t = x_q$9$q;
-        sr_t = sr_q$9$q;
-        dx_neg_t = dxn_q$9$q;
         dx_mag_t = dxm_q$9$q;
-        dy_neg_t = dyn_q$9$q;
         dy_mag_t = dym_q$9$q;
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
-        x_out_q$d = 1'b0;
+        x_out = 1'b0;
         if (dxm_q$8$q != 'h0) begin
             if (dxn_q$8$q) begin
-                x_out_q$d = x_q$8$q == nx_last$q;
+                x_out = x_q$8$q == nx_last$q;
             end
             else begin
-                x_out_q$d = x_q$8$q == 'h0;
+                x_out = x_q$8$q == 'h0;
             end
         end
-        y_out_q$d = 1'b0;
+        y_out = 1'b0;
         if (dym_q$8$q != 'h0) begin
             if (dyn_q$8$q) begin
-                y_out_q$d = y_q$8$q == ny_last$q;
+                y_out = y_q$8$q == ny_last$q;
             end
             else begin
-                y_out_q$d = y_q$8$q == 'h0;
+                y_out = y_q$8$q == 'h0;
             end
         end
-        x_out_t = x_out_q$q;
-        y_out_t = y_out_q$q;
+        dx_nz = dxm_q$8$q != 'h0;
+        dy_nz = dym_q$8$q != 'h0;
+        sel = 7'(sr_q$8$q) | (7'(dxn_q$8$q) << 'h1) | (7'(dx_nz) << 'h2) | (7'(dyn_q$8$q) << 'h3) | (7'(dy_nz) << 'h4) | (7'(x_out) << 'h5) | (7'(y_out) << 'h6);
+        sel_q$0$clock = clock;
+        sel_q$0$d = sel;
+        sel_t$0 = sel_q$0$q;
+        sel_q$1$clock = clock;
+        sel_q$1$d = sel;
+        sel_t$1 = sel_q$1$q;
+        sel_q$2$clock = clock;
+        sel_q$2$d = sel;
+        sel_t$2 = sel_q$2$q;
+        sel_q$3$clock = clock;
+        sel_q$3$d = sel;
+        sel_t$3 = sel_q$3$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -16645,23 +17073,6 @@ module top$lanes$2$ctl$dxn_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$dxn_q$8
-module top$lanes$2$ctl$dxn_q$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$ctl$dxn_q$9
 module top$lanes$2$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -16985,23 +17396,6 @@ module top$lanes$2$ctl$dyn_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$dyn_q$8
-module top$lanes$2$ctl$dyn_q$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$ctl$dyn_q$9
 module top$lanes$2$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -18107,6 +18501,74 @@ module top$lanes$2$ctl$pad_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$pad_q$9
+module top$lanes$2$ctl$sel_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$ctl$sel_q$0
+module top$lanes$2$ctl$sel_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$ctl$sel_q$1
+module top$lanes$2$ctl$sel_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$ctl$sel_q$2
+module top$lanes$2$ctl$sel_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$ctl$sel_q$3
 module top$lanes$2$ctl$sr_q$0(d,q,clock);
     
     // Module arguments
@@ -18260,23 +18722,6 @@ module top$lanes$2$ctl$sr_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$sr_q$8
-module top$lanes$2$ctl$sr_q$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$ctl$sr_q$9
 module top$lanes$2$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -18634,23 +19079,6 @@ module top$lanes$2$ctl$v_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$v_q$9
-module top$lanes$2$ctl$x_out_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$ctl$x_out_q
 module top$lanes$2$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -18821,23 +19249,6 @@ module top$lanes$2$ctl$x_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$2$ctl$x_q$9
-module top$lanes$2$ctl$y_out_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$ctl$y_out_q
 module top$lanes$2$ctl$y_q$0(d,q,clock);
     
     // Module arguments
@@ -19290,13 +19701,12 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [63:0] ctl$dims;
     reg  [15:0] ctl$coord_mask;
     wire  [15:0] ctl$x_t;
-    wire  ctl$sr_t;
-    wire  ctl$dx_neg_t;
     wire  [15:0] ctl$dx_mag_t;
-    wire  ctl$dy_neg_t;
     wire  [15:0] ctl$dy_mag_t;
-    wire  ctl$x_out_t;
-    wire  ctl$y_out_t;
+    wire  [6:0] ctl$sel_t$0;
+    wire  [6:0] ctl$sel_t$1;
+    wire  [6:0] ctl$sel_t$2;
+    wire  [6:0] ctl$sel_t$3;
     wire  ctl$res_beat;
     wire  ctl$res_valid;
     wire  ctl$px_valid;
@@ -19349,13 +19759,10 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
     reg  [63:0] cells$a$6;
     reg  [63:0] cells$a$7;
     reg  [63:0] cells$a$8;
-    reg  cells$sr;
-    reg  cells$dx_neg;
-    reg  [15:0] cells$dx_mag;
-    reg  cells$dy_neg;
-    reg  [15:0] cells$dy_mag;
-    reg  cells$x_out;
-    reg  cells$y_out;
+    reg  [6:0] cells$sel$0;
+    reg  [6:0] cells$sel$1;
+    reg  [6:0] cells$sel$2;
+    reg  [6:0] cells$sel$3;
     wire  [31:0] cells$c00$0;
     wire  [31:0] cells$c00$1;
     wire  [31:0] cells$c00$2;
@@ -19506,13 +19913,12 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
         .dims(ctl$dims),
         .coord_mask(ctl$coord_mask),
         .x_t(ctl$x_t),
-        .sr_t(ctl$sr_t),
-        .dx_neg_t(ctl$dx_neg_t),
         .dx_mag_t(ctl$dx_mag_t),
-        .dy_neg_t(ctl$dy_neg_t),
         .dy_mag_t(ctl$dy_mag_t),
-        .x_out_t(ctl$x_out_t),
-        .y_out_t(ctl$y_out_t),
+        .sel_t$0(ctl$sel_t$0),
+        .sel_t$1(ctl$sel_t$1),
+        .sel_t$2(ctl$sel_t$2),
+        .sel_t$3(ctl$sel_t$3),
         .res_beat(ctl$res_beat),
         .res_valid(ctl$res_valid),
         .px_valid(ctl$px_valid),
@@ -19569,13 +19975,10 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
         .a$6(cells$a$6),
         .a$7(cells$a$7),
         .a$8(cells$a$8),
-        .sr(cells$sr),
-        .dx_neg(cells$dx_neg),
-        .dx_mag(cells$dx_mag),
-        .dy_neg(cells$dy_neg),
-        .dy_mag(cells$dy_mag),
-        .x_out(cells$x_out),
-        .y_out(cells$y_out),
+        .sel$0(cells$sel$0),
+        .sel$1(cells$sel$1),
+        .sel$2(cells$sel$2),
+        .sel$3(cells$sel$3),
         .c00$0(cells$c00$0),
         .c00$1(cells$c00$1),
         .c00$2(cells$c00$2),
@@ -19735,13 +20138,10 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
         cells$a$7 = taps$a$7;
         cells$a$8 = taps$a$8;
         cells$order = order;
-        cells$x_out = ctl$x_out_t;
-        cells$y_out = ctl$y_out_t;
-        cells$sr = ctl$sr_t;
-        cells$dx_neg = ctl$dx_neg_t;
-        cells$dx_mag = ctl$dx_mag_t;
-        cells$dy_neg = ctl$dy_neg_t;
-        cells$dy_mag = ctl$dy_mag_t;
+        cells$sel$0 = ctl$sel_t$0;
+        cells$sel$1 = ctl$sel_t$1;
+        cells$sel$2 = ctl$sel_t$2;
+        cells$sel$3 = ctl$sel_t$3;
         bilinear$clock = clock;
         bilinear$c00$0 = cells$c00$0;
         bilinear$c10$0 = cells$c10$0;
@@ -19784,7 +20184,7 @@ module top$lanes$3(clock,host_write,host_address,host_data,dims,beats,order,beat
     end
     
 endmodule // top$lanes$3
-module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy_neg,dy_mag,x_out,y_out,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,order);
+module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sel$0,sel$1,sel$2,sel$3,c00$0,c00$1,c00$2,c00$3,c10$0,c10$1,c10$2,c10$3,c01$0,c01$1,c01$2,c01$3,c11$0,c11$1,c11$2,c11$3,order);
     
     // Module arguments
     input wire  [63:0] a$0;
@@ -19796,13 +20196,10 @@ module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     input wire  [63:0] a$6;
     input wire  [63:0] a$7;
     input wire  [63:0] a$8;
-    input wire  sr;
-    input wire  dx_neg;
-    input wire  [15:0] dx_mag;
-    input wire  dy_neg;
-    input wire  [15:0] dy_mag;
-    input wire  x_out;
-    input wire  y_out;
+    input wire  [6:0] sel$0;
+    input wire  [6:0] sel$1;
+    input wire  [6:0] sel$2;
+    input wire  [6:0] sel$3;
     output reg  [31:0] c00$0;
     output reg  [31:0] c00$1;
     output reg  [31:0] c00$2;
@@ -19828,10 +20225,22 @@ module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
     
     // Local signals
     reg  [63:0] reset;
-    reg  [63:0] w00;
-    reg  [63:0] w10;
-    reg  [63:0] w01;
-    reg  [63:0] w11;
+    reg  [63:0] w00$0;
+    reg  [63:0] w00$1;
+    reg  [63:0] w00$2;
+    reg  [63:0] w00$3;
+    reg  [63:0] w10$0;
+    reg  [63:0] w10$1;
+    reg  [63:0] w10$2;
+    reg  [63:0] w10$3;
+    reg  [63:0] w01$0;
+    reg  [63:0] w01$1;
+    reg  [63:0] w01$2;
+    reg  [63:0] w01$3;
+    reg  [63:0] w11$0;
+    reg  [63:0] w11$1;
+    reg  [63:0] w11$2;
+    reg  [63:0] w11$3;
     
     // Update code
     always @(*) begin
@@ -19839,80 +20248,238 @@ module top$lanes$3$cells(a$0,a$1,a$2,a$3,a$4,a$5,a$6,a$7,a$8,sr,dx_neg,dx_mag,dy
         if (order['h1]) begin
             reset = vmax;
         end
-        w00 = a$0;
-        w10 = a$0;
-        w01 = a$0;
-        w11 = a$0;
-        if (dx_mag != 'h0) begin
-            if (dx_neg) begin
-                w10 = a$2;
+        w00$0 = a$0;
+        w10$0 = a$0;
+        w01$0 = a$0;
+        if (sel$0['h2]) begin
+            if (sel$0['h1]) begin
+                w10$0 = a$2;
             end
             else begin
-                w10 = a$1;
+                w10$0 = a$1;
             end
         end
-        if (dy_mag != 'h0) begin
-            if (dy_neg) begin
-                w01 = a$4;
+        if (sel$0['h4]) begin
+            if (sel$0['h3]) begin
+                w01$0 = a$4;
             end
             else begin
-                w01 = a$3;
+                w01$0 = a$3;
             end
         end
-        w11 = w01;
-        if (dx_mag != 'h0) begin
-            w11 = w10;
-            if (dy_mag != 'h0) begin
-                if (dx_neg) begin
-                    if (dy_neg) begin
-                        w11 = a$8;
+        w11$0 = w01$0;
+        if (sel$0['h2]) begin
+            w11$0 = w10$0;
+            if (sel$0['h4]) begin
+                if (sel$0['h1]) begin
+                    if (sel$0['h3]) begin
+                        w11$0 = a$8;
                     end
                     else begin
-                        w11 = a$6;
+                        w11$0 = a$6;
                     end
                 end
-                else if (dy_neg) begin
-                    w11 = a$7;
+                else if (sel$0['h3]) begin
+                    w11$0 = a$7;
                 end
                 else begin
-                    w11 = a$5;
+                    w11$0 = a$5;
                 end
             end
         end
-        if (x_out) begin
-            w10 = reset;
-            w11 = reset;
+        if (sel$0['h5]) begin
+            w10$0 = reset;
+            w11$0 = reset;
         end
-        if (y_out) begin
-            w01 = reset;
-            w11 = reset;
+        if (sel$0['h6]) begin
+            w01$0 = reset;
+            w11$0 = reset;
         end
-        if (sr) begin
-            w00 = reset;
-            w10 = reset;
-            w01 = reset;
-            w11 = reset;
+        if (sel$0['h0]) begin
+            w00$0 = reset;
+            w10$0 = reset;
+            w01$0 = reset;
+            w11$0 = reset;
         end
-        c00$0 = 32'(w00 & r_mask);
-        c00$1 = 32'((w00 >> 'h10) & gba_mask);
-        c00$2 = 32'((w00 >> 'h20) & gba_mask);
-        c00$3 = 32'((w00 >> 'h30) & gba_mask);
-        c10$0 = 32'(w10 & r_mask);
-        c10$1 = 32'((w10 >> 'h10) & gba_mask);
-        c10$2 = 32'((w10 >> 'h20) & gba_mask);
-        c10$3 = 32'((w10 >> 'h30) & gba_mask);
-        c01$0 = 32'(w01 & r_mask);
-        c01$1 = 32'((w01 >> 'h10) & gba_mask);
-        c01$2 = 32'((w01 >> 'h20) & gba_mask);
-        c01$3 = 32'((w01 >> 'h30) & gba_mask);
-        c11$0 = 32'(w11 & r_mask);
-        c11$1 = 32'((w11 >> 'h10) & gba_mask);
-        c11$2 = 32'((w11 >> 'h20) & gba_mask);
-        c11$3 = 32'((w11 >> 'h30) & gba_mask);
+        w00$1 = a$0;
+        w10$1 = a$0;
+        w01$1 = a$0;
+        if (sel$1['h2]) begin
+            if (sel$1['h1]) begin
+                w10$1 = a$2;
+            end
+            else begin
+                w10$1 = a$1;
+            end
+        end
+        if (sel$1['h4]) begin
+            if (sel$1['h3]) begin
+                w01$1 = a$4;
+            end
+            else begin
+                w01$1 = a$3;
+            end
+        end
+        w11$1 = w01$1;
+        if (sel$1['h2]) begin
+            w11$1 = w10$1;
+            if (sel$1['h4]) begin
+                if (sel$1['h1]) begin
+                    if (sel$1['h3]) begin
+                        w11$1 = a$8;
+                    end
+                    else begin
+                        w11$1 = a$6;
+                    end
+                end
+                else if (sel$1['h3]) begin
+                    w11$1 = a$7;
+                end
+                else begin
+                    w11$1 = a$5;
+                end
+            end
+        end
+        if (sel$1['h5]) begin
+            w10$1 = reset;
+            w11$1 = reset;
+        end
+        if (sel$1['h6]) begin
+            w01$1 = reset;
+            w11$1 = reset;
+        end
+        if (sel$1['h0]) begin
+            w00$1 = reset;
+            w10$1 = reset;
+            w01$1 = reset;
+            w11$1 = reset;
+        end
+        w00$2 = a$0;
+        w10$2 = a$0;
+        w01$2 = a$0;
+        if (sel$2['h2]) begin
+            if (sel$2['h1]) begin
+                w10$2 = a$2;
+            end
+            else begin
+                w10$2 = a$1;
+            end
+        end
+        if (sel$2['h4]) begin
+            if (sel$2['h3]) begin
+                w01$2 = a$4;
+            end
+            else begin
+                w01$2 = a$3;
+            end
+        end
+        w11$2 = w01$2;
+        if (sel$2['h2]) begin
+            w11$2 = w10$2;
+            if (sel$2['h4]) begin
+                if (sel$2['h1]) begin
+                    if (sel$2['h3]) begin
+                        w11$2 = a$8;
+                    end
+                    else begin
+                        w11$2 = a$6;
+                    end
+                end
+                else if (sel$2['h3]) begin
+                    w11$2 = a$7;
+                end
+                else begin
+                    w11$2 = a$5;
+                end
+            end
+        end
+        if (sel$2['h5]) begin
+            w10$2 = reset;
+            w11$2 = reset;
+        end
+        if (sel$2['h6]) begin
+            w01$2 = reset;
+            w11$2 = reset;
+        end
+        if (sel$2['h0]) begin
+            w00$2 = reset;
+            w10$2 = reset;
+            w01$2 = reset;
+            w11$2 = reset;
+        end
+        w00$3 = a$0;
+        w10$3 = a$0;
+        w01$3 = a$0;
+        if (sel$3['h2]) begin
+            if (sel$3['h1]) begin
+                w10$3 = a$2;
+            end
+            else begin
+                w10$3 = a$1;
+            end
+        end
+        if (sel$3['h4]) begin
+            if (sel$3['h3]) begin
+                w01$3 = a$4;
+            end
+            else begin
+                w01$3 = a$3;
+            end
+        end
+        w11$3 = w01$3;
+        if (sel$3['h2]) begin
+            w11$3 = w10$3;
+            if (sel$3['h4]) begin
+                if (sel$3['h1]) begin
+                    if (sel$3['h3]) begin
+                        w11$3 = a$8;
+                    end
+                    else begin
+                        w11$3 = a$6;
+                    end
+                end
+                else if (sel$3['h3]) begin
+                    w11$3 = a$7;
+                end
+                else begin
+                    w11$3 = a$5;
+                end
+            end
+        end
+        if (sel$3['h5]) begin
+            w10$3 = reset;
+            w11$3 = reset;
+        end
+        if (sel$3['h6]) begin
+            w01$3 = reset;
+            w11$3 = reset;
+        end
+        if (sel$3['h0]) begin
+            w00$3 = reset;
+            w10$3 = reset;
+            w01$3 = reset;
+            w11$3 = reset;
+        end
+        c00$0 = 32'(w00$0 & r_mask);
+        c00$1 = 32'((w00$1 >> 'h10) & gba_mask);
+        c00$2 = 32'((w00$2 >> 'h20) & gba_mask);
+        c00$3 = 32'((w00$3 >> 'h30) & gba_mask);
+        c10$0 = 32'(w10$0 & r_mask);
+        c10$1 = 32'((w10$1 >> 'h10) & gba_mask);
+        c10$2 = 32'((w10$2 >> 'h20) & gba_mask);
+        c10$3 = 32'((w10$3 >> 'h30) & gba_mask);
+        c01$0 = 32'(w01$0 & r_mask);
+        c01$1 = 32'((w01$1 >> 'h10) & gba_mask);
+        c01$2 = 32'((w01$2 >> 'h20) & gba_mask);
+        c01$3 = 32'((w01$3 >> 'h30) & gba_mask);
+        c11$0 = 32'(w11$0 & r_mask);
+        c11$1 = 32'((w11$1 >> 'h10) & gba_mask);
+        c11$2 = 32'((w11$2 >> 'h20) & gba_mask);
+        c11$3 = 32'((w11$3 >> 'h30) & gba_mask);
     end
     
 endmodule // top$lanes$3$cells
-module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,sr_t,dx_neg_t,dx_mag_t,dy_neg_t,dy_mag_t,x_out_t,y_out_t,res_beat,res_valid,px_valid,px_x,px_y,px_face);
+module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_mag,dy_neg,dy_mag,dims,coord_mask,x_t,dx_mag_t,dy_mag_t,sel_t$0,sel_t$1,sel_t$2,sel_t$3,res_beat,res_valid,px_valid,px_x,px_y,px_face);
     
     // Module arguments
     input wire  clock;
@@ -19932,13 +20499,12 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     input wire  [63:0] dims;
     input wire  [15:0] coord_mask;
     output reg  [15:0] x_t;
-    output reg  sr_t;
-    output reg  dx_neg_t;
     output reg  [15:0] dx_mag_t;
-    output reg  dy_neg_t;
     output reg  [15:0] dy_mag_t;
-    output reg  x_out_t;
-    output reg  y_out_t;
+    output reg  [6:0] sel_t$0;
+    output reg  [6:0] sel_t$1;
+    output reg  [6:0] sel_t$2;
+    output reg  [6:0] sel_t$3;
     output reg  res_beat;
     output reg  res_valid;
     output reg  px_valid;
@@ -19953,12 +20519,18 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  [15:0] ny_last$d;
     wire  [15:0] ny_last$q;
     reg  ny_last$clock;
-    reg  x_out_q$d;
-    wire  x_out_q$q;
-    reg  x_out_q$clock;
-    reg  y_out_q$d;
-    wire  y_out_q$q;
-    reg  y_out_q$clock;
+    reg  [6:0] sel_q$0$d;
+    wire  [6:0] sel_q$0$q;
+    reg  sel_q$0$clock;
+    reg  [6:0] sel_q$1$d;
+    wire  [6:0] sel_q$1$q;
+    reg  sel_q$1$clock;
+    reg  [6:0] sel_q$2$d;
+    wire  [6:0] sel_q$2$q;
+    reg  sel_q$2$clock;
+    reg  [6:0] sel_q$3$d;
+    wire  [6:0] sel_q$3$q;
+    reg  sel_q$3$clock;
     reg  [15:0] x_q$0$d;
     wire  [15:0] x_q$0$q;
     reg  x_q$0$clock;
@@ -20043,9 +20615,6 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  sr_q$8$d;
     wire  sr_q$8$q;
     reg  sr_q$8$clock;
-    reg  sr_q$9$d;
-    wire  sr_q$9$q;
-    reg  sr_q$9$clock;
     reg  dxn_q$0$d;
     wire  dxn_q$0$q;
     reg  dxn_q$0$clock;
@@ -20073,9 +20642,6 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dxn_q$8$d;
     wire  dxn_q$8$q;
     reg  dxn_q$8$clock;
-    reg  dxn_q$9$d;
-    wire  dxn_q$9$q;
-    reg  dxn_q$9$clock;
     reg  [15:0] dxm_q$0$d;
     wire  [15:0] dxm_q$0$q;
     reg  dxm_q$0$clock;
@@ -20133,9 +20699,6 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     reg  dyn_q$8$d;
     wire  dyn_q$8$q;
     reg  dyn_q$8$clock;
-    reg  dyn_q$9$d;
-    wire  dyn_q$9$q;
-    reg  dyn_q$9$clock;
     reg  [15:0] dym_q$0$d;
     wire  [15:0] dym_q$0$q;
     reg  dym_q$0$clock;
@@ -20545,6 +21108,13 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     wire  [2:0] face_q$20$q;
     reg  face_q$20$clock;
     
+    // Local signals
+    reg  x_out;
+    reg  y_out;
+    reg  dx_nz;
+    reg  dy_nz;
+    reg  [6:0] sel;
+    
     // Sub module instances
     top$lanes$3$ctl$nx_last nx_last(
         .d(nx_last$d),
@@ -20556,15 +21126,25 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(ny_last$q),
         .clock(ny_last$clock)
     );
-    top$lanes$3$ctl$x_out_q x_out_q(
-        .d(x_out_q$d),
-        .q(x_out_q$q),
-        .clock(x_out_q$clock)
+    top$lanes$3$ctl$sel_q$0 sel_q$0(
+        .d(sel_q$0$d),
+        .q(sel_q$0$q),
+        .clock(sel_q$0$clock)
     );
-    top$lanes$3$ctl$y_out_q y_out_q(
-        .d(y_out_q$d),
-        .q(y_out_q$q),
-        .clock(y_out_q$clock)
+    top$lanes$3$ctl$sel_q$1 sel_q$1(
+        .d(sel_q$1$d),
+        .q(sel_q$1$q),
+        .clock(sel_q$1$clock)
+    );
+    top$lanes$3$ctl$sel_q$2 sel_q$2(
+        .d(sel_q$2$d),
+        .q(sel_q$2$q),
+        .clock(sel_q$2$clock)
+    );
+    top$lanes$3$ctl$sel_q$3 sel_q$3(
+        .d(sel_q$3$d),
+        .q(sel_q$3$q),
+        .clock(sel_q$3$clock)
     );
     top$lanes$3$ctl$x_q$0 x_q$0(
         .d(x_q$0$d),
@@ -20706,11 +21286,6 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .q(sr_q$8$q),
         .clock(sr_q$8$clock)
     );
-    top$lanes$3$ctl$sr_q$9 sr_q$9(
-        .d(sr_q$9$d),
-        .q(sr_q$9$q),
-        .clock(sr_q$9$clock)
-    );
     top$lanes$3$ctl$dxn_q$0 dxn_q$0(
         .d(dxn_q$0$d),
         .q(dxn_q$0$q),
@@ -20755,11 +21330,6 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dxn_q$8$d),
         .q(dxn_q$8$q),
         .clock(dxn_q$8$clock)
-    );
-    top$lanes$3$ctl$dxn_q$9 dxn_q$9(
-        .d(dxn_q$9$d),
-        .q(dxn_q$9$q),
-        .clock(dxn_q$9$clock)
     );
     top$lanes$3$ctl$dxm_q$0 dxm_q$0(
         .d(dxm_q$0$d),
@@ -20855,11 +21425,6 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         .d(dyn_q$8$d),
         .q(dyn_q$8$q),
         .clock(dyn_q$8$clock)
-    );
-    top$lanes$3$ctl$dyn_q$9 dyn_q$9(
-        .d(dyn_q$9$d),
-        .q(dyn_q$9$q),
-        .clock(dyn_q$9$clock)
     );
     top$lanes$3$ctl$dym_q$0 dym_q$0(
         .d(dym_q$0$d),
@@ -21546,71 +22111,37 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
     always @(*) begin
         nx_last$clock = clock;
         ny_last$clock = clock;
-        x_out_q$clock = clock;
-        y_out_q$clock = clock;
         nx_last$d = nx_last$q;
         ny_last$d = ny_last$q;
-        x_out_q$d = x_out_q$q;
-        y_out_q$d = y_out_q$q;
         x_q$0$clock = clock;
-        sr_q$0$clock = clock;
-        dxn_q$0$clock = clock;
         dxm_q$0$clock = clock;
-        dyn_q$0$clock = clock;
         dym_q$0$clock = clock;
         x_q$1$clock = clock;
-        sr_q$1$clock = clock;
-        dxn_q$1$clock = clock;
         dxm_q$1$clock = clock;
-        dyn_q$1$clock = clock;
         dym_q$1$clock = clock;
         x_q$2$clock = clock;
-        sr_q$2$clock = clock;
-        dxn_q$2$clock = clock;
         dxm_q$2$clock = clock;
-        dyn_q$2$clock = clock;
         dym_q$2$clock = clock;
         x_q$3$clock = clock;
-        sr_q$3$clock = clock;
-        dxn_q$3$clock = clock;
         dxm_q$3$clock = clock;
-        dyn_q$3$clock = clock;
         dym_q$3$clock = clock;
         x_q$4$clock = clock;
-        sr_q$4$clock = clock;
-        dxn_q$4$clock = clock;
         dxm_q$4$clock = clock;
-        dyn_q$4$clock = clock;
         dym_q$4$clock = clock;
         x_q$5$clock = clock;
-        sr_q$5$clock = clock;
-        dxn_q$5$clock = clock;
         dxm_q$5$clock = clock;
-        dyn_q$5$clock = clock;
         dym_q$5$clock = clock;
         x_q$6$clock = clock;
-        sr_q$6$clock = clock;
-        dxn_q$6$clock = clock;
         dxm_q$6$clock = clock;
-        dyn_q$6$clock = clock;
         dym_q$6$clock = clock;
         x_q$7$clock = clock;
-        sr_q$7$clock = clock;
-        dxn_q$7$clock = clock;
         dxm_q$7$clock = clock;
-        dyn_q$7$clock = clock;
         dym_q$7$clock = clock;
         x_q$8$clock = clock;
-        sr_q$8$clock = clock;
-        dxn_q$8$clock = clock;
         dxm_q$8$clock = clock;
-        dyn_q$8$clock = clock;
         dym_q$8$clock = clock;
         x_q$9$clock = clock;
-        sr_q$9$clock = clock;
-        dxn_q$9$clock = clock;
         dxm_q$9$clock = clock;
-        dyn_q$9$clock = clock;
         dym_q$9$clock = clock;
         v_q$0$clock = clock;
         er_q$0$clock = clock;
@@ -21746,104 +22277,138 @@ module top$lanes$3$ctl(clock,valid,er,pad,base_x,base_y,face,x,y,sr,dx_neg,dx_ma
         dyn_q$0$d = dy_neg;
         dym_q$0$d = dy_mag;
         x_q$1$d = x_q$0$q;
-        sr_q$1$d = sr_q$0$q;
-        dxn_q$1$d = dxn_q$0$q;
         dxm_q$1$d = dxm_q$0$q;
-        dyn_q$1$d = dyn_q$0$q;
         dym_q$1$d = dym_q$0$q;
         x_q$2$d = x_q$1$q;
-        sr_q$2$d = sr_q$1$q;
-        dxn_q$2$d = dxn_q$1$q;
         dxm_q$2$d = dxm_q$1$q;
-        dyn_q$2$d = dyn_q$1$q;
         dym_q$2$d = dym_q$1$q;
         x_q$3$d = x_q$2$q;
-        sr_q$3$d = sr_q$2$q;
-        dxn_q$3$d = dxn_q$2$q;
         dxm_q$3$d = dxm_q$2$q;
-        dyn_q$3$d = dyn_q$2$q;
         dym_q$3$d = dym_q$2$q;
         x_q$4$d = x_q$3$q;
-        sr_q$4$d = sr_q$3$q;
-        dxn_q$4$d = dxn_q$3$q;
         dxm_q$4$d = dxm_q$3$q;
-        dyn_q$4$d = dyn_q$3$q;
         dym_q$4$d = dym_q$3$q;
         x_q$5$d = x_q$4$q;
-        sr_q$5$d = sr_q$4$q;
-        dxn_q$5$d = dxn_q$4$q;
         dxm_q$5$d = dxm_q$4$q;
-        dyn_q$5$d = dyn_q$4$q;
         dym_q$5$d = dym_q$4$q;
         x_q$6$d = x_q$5$q;
-        sr_q$6$d = sr_q$5$q;
-        dxn_q$6$d = dxn_q$5$q;
         dxm_q$6$d = dxm_q$5$q;
-        dyn_q$6$d = dyn_q$5$q;
         dym_q$6$d = dym_q$5$q;
         x_q$7$d = x_q$6$q;
-        sr_q$7$d = sr_q$6$q;
-        dxn_q$7$d = dxn_q$6$q;
         dxm_q$7$d = dxm_q$6$q;
-        dyn_q$7$d = dyn_q$6$q;
         dym_q$7$d = dym_q$6$q;
         x_q$8$d = x_q$7$q;
-        sr_q$8$d = sr_q$7$q;
-        dxn_q$8$d = dxn_q$7$q;
         dxm_q$8$d = dxm_q$7$q;
-        dyn_q$8$d = dyn_q$7$q;
         dym_q$8$d = dym_q$7$q;
         x_q$9$d = x_q$8$q;
-        sr_q$9$d = sr_q$8$q;
-        dxn_q$9$d = dxn_q$8$q;
         dxm_q$9$d = dxm_q$8$q;
-        dyn_q$9$d = dyn_q$8$q;
         dym_q$9$d = dym_q$8$q;
         y_q$0$clock = clock;
+        sr_q$0$clock = clock;
+        dxn_q$0$clock = clock;
+        dyn_q$0$clock = clock;
         y_q$1$clock = clock;
+        sr_q$1$clock = clock;
+        dxn_q$1$clock = clock;
+        dyn_q$1$clock = clock;
         y_q$2$clock = clock;
+        sr_q$2$clock = clock;
+        dxn_q$2$clock = clock;
+        dyn_q$2$clock = clock;
         y_q$3$clock = clock;
+        sr_q$3$clock = clock;
+        dxn_q$3$clock = clock;
+        dyn_q$3$clock = clock;
         y_q$4$clock = clock;
+        sr_q$4$clock = clock;
+        dxn_q$4$clock = clock;
+        dyn_q$4$clock = clock;
         y_q$5$clock = clock;
+        sr_q$5$clock = clock;
+        dxn_q$5$clock = clock;
+        dyn_q$5$clock = clock;
         y_q$6$clock = clock;
+        sr_q$6$clock = clock;
+        dxn_q$6$clock = clock;
+        dyn_q$6$clock = clock;
         y_q$7$clock = clock;
+        sr_q$7$clock = clock;
+        dxn_q$7$clock = clock;
+        dyn_q$7$clock = clock;
         y_q$8$clock = clock;
+        sr_q$8$clock = clock;
+        dxn_q$8$clock = clock;
+        dyn_q$8$clock = clock;
         y_q$1$d = y_q$0$q;
+        sr_q$1$d = sr_q$0$q;
+        dxn_q$1$d = dxn_q$0$q;
+        dyn_q$1$d = dyn_q$0$q;
         y_q$2$d = y_q$1$q;
+        sr_q$2$d = sr_q$1$q;
+        dxn_q$2$d = dxn_q$1$q;
+        dyn_q$2$d = dyn_q$1$q;
         y_q$3$d = y_q$2$q;
+        sr_q$3$d = sr_q$2$q;
+        dxn_q$3$d = dxn_q$2$q;
+        dyn_q$3$d = dyn_q$2$q;
         y_q$4$d = y_q$3$q;
+        sr_q$4$d = sr_q$3$q;
+        dxn_q$4$d = dxn_q$3$q;
+        dyn_q$4$d = dyn_q$3$q;
         y_q$5$d = y_q$4$q;
+        sr_q$5$d = sr_q$4$q;
+        dxn_q$5$d = dxn_q$4$q;
+        dyn_q$5$d = dyn_q$4$q;
         y_q$6$d = y_q$5$q;
+        sr_q$6$d = sr_q$5$q;
+        dxn_q$6$d = dxn_q$5$q;
+        dyn_q$6$d = dyn_q$5$q;
         y_q$7$d = y_q$6$q;
+        sr_q$7$d = sr_q$6$q;
+        dxn_q$7$d = dxn_q$6$q;
+        dyn_q$7$d = dyn_q$6$q;
         y_q$8$d = y_q$7$q;
+        sr_q$8$d = sr_q$7$q;
+        dxn_q$8$d = dxn_q$7$q;
+        dyn_q$8$d = dyn_q$7$q;
         x_t = x_q$9$q;
-        sr_t = sr_q$9$q;
-        dx_neg_t = dxn_q$9$q;
         dx_mag_t = dxm_q$9$q;
-        dy_neg_t = dyn_q$9$q;
         dy_mag_t = dym_q$9$q;
         nx_last$d = dims[('h0)+:(16)] - 'h1;
         ny_last$d = dims[('h10)+:(16)] - 'h1;
-        x_out_q$d = 1'b0;
+        x_out = 1'b0;
         if (dxm_q$8$q != 'h0) begin
             if (dxn_q$8$q) begin
-                x_out_q$d = x_q$8$q == nx_last$q;
+                x_out = x_q$8$q == nx_last$q;
             end
             else begin
-                x_out_q$d = x_q$8$q == 'h0;
+                x_out = x_q$8$q == 'h0;
             end
         end
-        y_out_q$d = 1'b0;
+        y_out = 1'b0;
         if (dym_q$8$q != 'h0) begin
             if (dyn_q$8$q) begin
-                y_out_q$d = y_q$8$q == ny_last$q;
+                y_out = y_q$8$q == ny_last$q;
             end
             else begin
-                y_out_q$d = y_q$8$q == 'h0;
+                y_out = y_q$8$q == 'h0;
             end
         end
-        x_out_t = x_out_q$q;
-        y_out_t = y_out_q$q;
+        dx_nz = dxm_q$8$q != 'h0;
+        dy_nz = dym_q$8$q != 'h0;
+        sel = 7'(sr_q$8$q) | (7'(dxn_q$8$q) << 'h1) | (7'(dx_nz) << 'h2) | (7'(dyn_q$8$q) << 'h3) | (7'(dy_nz) << 'h4) | (7'(x_out) << 'h5) | (7'(y_out) << 'h6);
+        sel_q$0$clock = clock;
+        sel_q$0$d = sel;
+        sel_t$0 = sel_q$0$q;
+        sel_q$1$clock = clock;
+        sel_q$1$d = sel;
+        sel_t$1 = sel_q$1$q;
+        sel_q$2$clock = clock;
+        sel_q$2$d = sel;
+        sel_t$2 = sel_q$2$q;
+        sel_q$3$clock = clock;
+        sel_q$3$d = sel;
+        sel_t$3 = sel_q$3$q;
         v_q$0$d = valid;
         er_q$0$d = er;
         pad_q$0$d = pad;
@@ -23016,23 +23581,6 @@ module top$lanes$3$ctl$dxn_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$dxn_q$8
-module top$lanes$3$ctl$dxn_q$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$ctl$dxn_q$9
 module top$lanes$3$ctl$dym_q$0(d,q,clock);
     
     // Module arguments
@@ -23356,23 +23904,6 @@ module top$lanes$3$ctl$dyn_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$dyn_q$8
-module top$lanes$3$ctl$dyn_q$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$ctl$dyn_q$9
 module top$lanes$3$ctl$er_q$0(d,q,clock);
     
     // Module arguments
@@ -24478,6 +25009,74 @@ module top$lanes$3$ctl$pad_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$pad_q$9
+module top$lanes$3$ctl$sel_q$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$ctl$sel_q$0
+module top$lanes$3$ctl$sel_q$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$ctl$sel_q$1
+module top$lanes$3$ctl$sel_q$2(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$ctl$sel_q$2
+module top$lanes$3$ctl$sel_q$3(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$ctl$sel_q$3
 module top$lanes$3$ctl$sr_q$0(d,q,clock);
     
     // Module arguments
@@ -24631,23 +25230,6 @@ module top$lanes$3$ctl$sr_q$8(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$sr_q$8
-module top$lanes$3$ctl$sr_q$9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$ctl$sr_q$9
 module top$lanes$3$ctl$v_q$0(d,q,clock);
     
     // Module arguments
@@ -25005,23 +25587,6 @@ module top$lanes$3$ctl$v_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$v_q$9
-module top$lanes$3$ctl$x_out_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$ctl$x_out_q
 module top$lanes$3$ctl$x_q$0(d,q,clock);
     
     // Module arguments
@@ -25192,23 +25757,6 @@ module top$lanes$3$ctl$x_q$9(d,q,clock);
     end
           
 endmodule // top$lanes$3$ctl$x_q$9
-module top$lanes$3$ctl$y_out_q(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$ctl$y_out_q
 module top$lanes$3$ctl$y_q$0(d,q,clock);
     
     // Module arguments
