@@ -323,11 +323,20 @@ fn committed_synthesis_reports_are_current() {
 
 /// Every placed and routed report records the nextpnr options it was made
 /// with, and they are the ones `scripts/synth-reports` runs (`cube synth`'s
-/// defaults: seed 1, router1), so that the script makes it again the same
-/// way.
+/// defaults, router1 and seed 1, or the build's seed in
+/// `generated_verilog/synth/seeds.txt`), so that the script makes it again
+/// the same way.
 #[test]
 fn committed_reports_were_routed_as_the_script_routes() {
-    let want = serde_json::json!({"seed": 1, "router": "router1"});
+    let seeds = std::fs::read_to_string(root().join("generated_verilog/synth/seeds.txt")).unwrap();
+    let seed_of = |name: &str| {
+        seeds
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .filter_map(|l| l.split_once(' '))
+            .find(|(n, _)| *n == name)
+            .map_or(1, |(_, s)| s.trim().parse::<u32>().unwrap())
+    };
     let mut wrong = Vec::new();
     for c in configs() {
         // A missing report is the staleness test's to name.
@@ -335,9 +344,13 @@ fn committed_reports_were_routed_as_the_script_routes() {
             continue;
         };
         let r: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let want = serde_json::json!({"seed": seed_of(&c.name), "router": "router1"});
         if !r["fmax_mhz"].is_null() && r["pnr"] != want {
-            wrong.push(format!("{}: {}", c.name, r["pnr"]));
+            wrong.push(format!("{}: {} (want {want})", c.name, r["pnr"]));
         }
     }
-    assert!(wrong.is_empty(), "routed otherwise than {want}: {wrong:?}");
+    assert!(
+        wrong.is_empty(),
+        "routed otherwise than the script routes: {wrong:?}"
+    );
 }
