@@ -11,7 +11,11 @@
 //!    signs, and `|q|²` from three square tables (LUT logic, no
 //!    multiplier);
 //! 2. the products in two's complement, the first two summed and the third
-//!    registered beside them, and `rnorm(|q|²)` from a constant ROM;
+//!    registered beside them, and `rnorm(|q|²)` from a constant ROM; a
+//!    negative product `-p = !p + 1` goes into the sums as `!p`, and the
+//!    `+ 1`s, the count of the negative ones, into the third's register
+//!    (the same sums mod 2^32, one carry chain before each register where a
+//!    negation was a chain of its own);
 //! 3. the dot products `q · light`, `q · half` (the last sum), each made
 //!    positive and saturated to `normal_bits + 11` bits, its tests
 //!    reductions of the sum's bits, not compares after it;
@@ -94,8 +98,12 @@ pub struct Lighting {
     p_h: [DspProduct; 3],
     sl_q: [DFF<Bit>; 3],
     sh_q: [DFF<Bit>; 3],
+    /// Stage 2: the products, a negative one complemented, and the count
+    /// of the complemented ones (the `+ 1`s of their negations).
     t_pl: [Signal<Local, Bits<32>>; 3],
     t_ph: [Signal<Local, Bits<32>>; 3],
+    c_l: Signal<Local, Bits<32>>,
+    c_h: Signal<Local, Bits<32>>,
     n2: Signal<Local, Bits<16>>,
     n2_q: DFF<Bits<16>>,
     /// Stage 2: the first two products' sum, and the third.
@@ -187,6 +195,8 @@ impl Lighting {
             sh_q: Default::default(),
             t_pl: Default::default(),
             t_ph: Default::default(),
+            c_l: Default::default(),
+            c_h: Default::default(),
             qm: Default::default(),
             p_l: Default::default(),
             p_h: Default::default(),
@@ -319,20 +329,28 @@ impl Logic for Lighting {
         self.n2_q.d.next = self.n2.val();
         // Stage 2: the products in two's complement, the first two summed,
         // and 1 / |q|.
+        // `-p = !p + 1`: a negative product goes into the sums as `!p`,
+        // and the signs' count into the third product's register.
         for i in 0..3 {
             self.t_pl[i].next = self.p_l[i].p.val();
             if self.sl_q[i].q.val() {
-                self.t_pl[i].next = 0 - self.p_l[i].p.val();
+                self.t_pl[i].next = !self.p_l[i].p.val();
             }
             self.t_ph[i].next = self.p_h[i].p.val();
             if self.sh_q[i].q.val() {
-                self.t_ph[i].next = 0 - self.p_h[i].p.val();
+                self.t_ph[i].next = !self.p_h[i].p.val();
             }
         }
+        self.c_l.next = bit_cast::<32, 1>(self.sl_q[0].q.val().into())
+            + bit_cast::<32, 1>(self.sl_q[1].q.val().into())
+            + bit_cast::<32, 1>(self.sl_q[2].q.val().into());
+        self.c_h.next = bit_cast::<32, 1>(self.sh_q[0].q.val().into())
+            + bit_cast::<32, 1>(self.sh_q[1].q.val().into())
+            + bit_cast::<32, 1>(self.sh_q[2].q.val().into());
         self.pair_l.d.next = self.t_pl[0].val() + self.t_pl[1].val();
         self.pair_h.d.next = self.t_ph[0].val() + self.t_ph[1].val();
-        self.third_l.d.next = self.t_pl[2].val();
-        self.third_h.d.next = self.t_ph[2].val();
+        self.third_l.d.next = self.t_pl[2].val() + self.c_l.val();
+        self.third_h.d.next = self.t_ph[2].val() + self.c_h.val();
         self.rnorm.address.next = self.n2_q.q.val();
         self.rn.d.next = self.rnorm.data.val();
         // Stage 3: the dot products, positive ones saturated (and masked:

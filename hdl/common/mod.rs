@@ -1,7 +1,8 @@
 //! What both architectures build from: [`lerp`] (linear interpolation),
 //! [`over`] (the over operator, fused for the RPC's one-clock loop), the
 //! pipelined [`split_mul`] (the exact unorm multiplier, its product and its
-//! rounding in clocks of their own) and [`piped_over`],
+//! rounding in clocks of their own; [`split_mul_add`], the shader's, with
+//! an addend in the rounding's clock) and [`piped_over`],
 //! [`delay_line`] (and [`registered_line`], its output a register, and
 //! [`banked_line`], a register at each block RAM), [`ram`] (block RAM as
 //! deep as the scene needs) and
@@ -32,6 +33,7 @@ pub mod registered_line;
 pub mod regs;
 pub mod shader;
 pub mod split_mul;
+pub mod split_mul_add;
 pub mod square;
 pub mod table;
 pub mod view_rom;

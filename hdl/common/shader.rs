@@ -29,8 +29,8 @@
 //! - E5: the gradient-opacity read; the opacity at E6;
 //! - E4-E11: the lighting's `[diffuse, specular]`
 //!   ([`lighting::LATENCY`], its tables' words registered);
-//! - E12-E13: the product `c · d` ([`SplitMulUnorm`]: the product, then
-//!   its rounding half); E14: `sat(mul(c, d) + s)`;
+//! - E12-E13: `sat(mul(c, d) + s)` ([`SplitMulAddUnorm`]: the product,
+//!   then its rounding half with `s` above it), registered at E14;
 //! - E15-E16: the product with the opacity; E17: the sample.
 //!
 //! The intensity (MIP, MinIP), the classified colour and the opacity wait
@@ -42,6 +42,7 @@ use super::lighting::Lighting;
 use super::normal_quantizer::{self, NormalQuantizer};
 use super::regs::ADDRESS_BITS;
 use super::split_mul::SplitMulUnorm;
+use super::split_mul_add::SplitMulAddUnorm;
 use super::table::Table;
 use golden_model::fixed::max_of;
 use golden_model::host::{ShaderTables, Table as HostTable};
@@ -118,14 +119,9 @@ pub struct Shader {
     valid_q: [DFF<Bit>; 17],
     diffuse: Signal<Local, Bits<16>>,
     specular: Signal<Local, Bits<16>>,
-    specular_q: DFF<Bits<16>>,
-    specular_qq: DFF<Bits<16>>,
-    lit_r: SplitMulUnorm,
-    lit_g: SplitMulUnorm,
-    lit_b: SplitMulUnorm,
-    sum_r: Signal<Local, Bits<32>>,
-    sum_g: Signal<Local, Bits<32>>,
-    sum_b: Signal<Local, Bits<32>>,
+    lit_r: SplitMulAddUnorm,
+    lit_g: SplitMulAddUnorm,
+    lit_b: SplitMulAddUnorm,
     shaded_q: [DFF<Bits<16>>; 3],
     mul_r: SplitMulUnorm,
     mul_g: SplitMulUnorm,
@@ -269,14 +265,9 @@ impl Shader {
             valid_q: Default::default(),
             diffuse: Default::default(),
             specular: Default::default(),
-            specular_q: Default::default(),
-            specular_qq: Default::default(),
-            lit_r: SplitMulUnorm::enabled(c.rgba_bits, colour),
-            lit_g: SplitMulUnorm::enabled(c.rgba_bits, colour),
-            lit_b: SplitMulUnorm::enabled(c.rgba_bits, colour),
-            sum_r: Default::default(),
-            sum_g: Default::default(),
-            sum_b: Default::default(),
+            lit_r: SplitMulAddUnorm::enabled(c.rgba_bits, colour),
+            lit_g: SplitMulAddUnorm::enabled(c.rgba_bits, colour),
+            lit_b: SplitMulAddUnorm::enabled(c.rgba_bits, colour),
             shaded_q: Default::default(),
             mul_r: SplitMulUnorm::enabled(c.rgba_bits, colour),
             mul_g: SplitMulUnorm::enabled(c.rgba_bits, colour),
@@ -324,7 +315,7 @@ impl Shader {
 impl Logic for Shader {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, specular_q, specular_qq, r_q, g_q, b_q, a_q);
+        dff_setup!(self, clock, r_q, g_q, b_q, a_q);
         // The host port reaches every table and register.
         self.lut.clock.next = self.clock.val();
         self.lut.host_write.next = self.host_write.val();
@@ -435,42 +426,28 @@ impl Logic for Shader {
         for i in 1..11 {
             self.alpha_q[i].d.next = self.alpha_q[i - 1].q.val();
         }
-        // E12-E13: mul(c, diffuse); E14: shaded = sat(mul(c, diffuse) + specular).
+        // E12-E13: sat(mul(c, diffuse) + specular), registered at E14.
         self.diffuse.next = self.m_max.val();
         self.specular.next = 0.into();
         if self.shaded.val() {
             self.diffuse.next = self.lighting.diffuse.val();
             self.specular.next = self.lighting.specular.val();
         }
-        self.specular_q.d.next = self.specular.val();
-        self.specular_qq.d.next = self.specular_q.q.val();
         self.lit_r.a.next = bit_cast::<16, 64>(self.lut_q[8].q.val());
         self.lit_g.a.next = bit_cast::<16, 64>(self.lut_q[8].q.val() >> 16);
         self.lit_b.a.next = bit_cast::<16, 64>(self.lut_q[8].q.val() >> 32);
         self.lit_r.b.next = self.diffuse.val();
         self.lit_g.b.next = self.diffuse.val();
         self.lit_b.b.next = self.diffuse.val();
-        self.sum_r.next =
-            bit_cast::<32, 16>(self.lit_r.y.val()) + bit_cast::<32, 16>(self.specular_qq.q.val());
-        self.sum_g.next =
-            bit_cast::<32, 16>(self.lit_g.y.val()) + bit_cast::<32, 16>(self.specular_qq.q.val());
-        self.sum_b.next =
-            bit_cast::<32, 16>(self.lit_b.y.val()) + bit_cast::<32, 16>(self.specular_qq.q.val());
+        self.lit_r.c.next = self.specular.val();
+        self.lit_g.c.next = self.specular.val();
+        self.lit_b.c.next = self.specular.val();
         for i in 0..3 {
             self.shaded_q[i].clock.next = self.clock.val();
         }
-        self.shaded_q[0].d.next = bit_cast::<16, 32>(self.sum_r.val());
-        if self.sum_r.val() > bit_cast::<32, 16>(self.m_max.val()) {
-            self.shaded_q[0].d.next = self.m_max.val();
-        }
-        self.shaded_q[1].d.next = bit_cast::<16, 32>(self.sum_g.val());
-        if self.sum_g.val() > bit_cast::<32, 16>(self.m_max.val()) {
-            self.shaded_q[1].d.next = self.m_max.val();
-        }
-        self.shaded_q[2].d.next = bit_cast::<16, 32>(self.sum_b.val());
-        if self.sum_b.val() > bit_cast::<32, 16>(self.m_max.val()) {
-            self.shaded_q[2].d.next = self.m_max.val();
-        }
+        self.shaded_q[0].d.next = self.lit_r.y.val();
+        self.shaded_q[1].d.next = self.lit_g.y.val();
+        self.shaded_q[2].d.next = self.lit_b.y.val();
         // E15-E16: mul(shaded, alpha); E17: the sample, or the scalar modes'.
         self.mul_r.a.next = self.shaded_q[0].q.val();
         self.mul_g.a.next = self.shaded_q[1].q.val();

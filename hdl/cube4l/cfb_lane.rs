@@ -118,8 +118,8 @@ pub struct CfbLane<const A: usize> {
     b_u: LaneCopy<Bits<16>>,
     slab_lo: LaneCopy<Bits<16>>,
     slab_hi: LaneCopy<Bits<16>>,
-    dx_abs: Signal<Local, Bits<32>>,
-    dy_abs: Signal<Local, Bits<32>>,
+    dx_abs: Signal<Local, Bits<16>>,
+    dy_abs: Signal<Local, Bits<16>>,
     /// The parallel view's increments, registered from the copies of `Dx`
     /// and `Dy` (two clocks behind the register file): they hold for a
     /// frame, and the control reads them `ADDRESS_STAGES + 2` clocks after
@@ -467,22 +467,28 @@ impl<const A: usize> Logic for CfbLane<A> {
         self.b_u.d.next = self.address_reg.val().get_bits::<16>(0);
         self.slab_lo.d.next = self.address_reg.val().get_bits::<16>(16);
         self.slab_hi.d.next = self.address_reg.val().get_bits::<16>(32);
-        // |Dx| and |Dy|: the low 32 bits of the negation need only the low
-        // 32 bits of the register.
-        self.dx_abs.next = self.view_dx.q.val().get_bits::<32>(0);
+        // |Dx| and |Dy|: the magnitudes the lanes take are 16 bits, the
+        // low 16 bits of the negation need only the register's.
+        self.dx_abs.next = self.view_dx.q.val().get_bits::<16>(0);
         if self.view_dx.q.val().get_bit(32) {
-            self.dx_abs.next = 0 - self.view_dx.q.val().get_bits::<32>(0);
+            self.dx_abs.next = 0 - self.view_dx.q.val().get_bits::<16>(0);
         }
-        self.dy_abs.next = self.view_dy.q.val().get_bits::<32>(0);
+        self.dy_abs.next = self.view_dy.q.val().get_bits::<16>(0);
         if self.view_dy.q.val().get_bit(32) {
-            self.dy_abs.next = 0 - self.view_dy.q.val().get_bits::<32>(0);
+            self.dy_abs.next = 0 - self.view_dy.q.val().get_bits::<16>(0);
         }
-        self.par_dxm.d.next = bit_cast::<16, 32>(self.dx_abs.val());
-        self.par_dxn.d.next = self.view_dx.q.val().get_bit(32) & (self.dx_abs.val() != 0);
-        self.par_dx_pos.d.next = !self.view_dx.q.val().get_bit(32) & (self.dx_abs.val() != 0);
-        self.par_dym.d.next = bit_cast::<16, 32>(self.dy_abs.val());
-        self.par_dyn.d.next = self.view_dy.q.val().get_bit(32) & (self.dy_abs.val() != 0);
-        self.par_dy_pos.d.next = !self.view_dy.q.val().get_bit(32) & (self.dy_abs.val() != 0);
+        self.par_dxm.d.next = self.dx_abs.val();
+        // Non-zero tested on the register, not on the negation (`-x` is
+        // zero mod 2^32 only where `x` is): a reduction beside the chain.
+        self.par_dxn.d.next =
+            self.view_dx.q.val().get_bit(32) & (self.view_dx.q.val().get_bits::<32>(0) != 0);
+        self.par_dx_pos.d.next =
+            !self.view_dx.q.val().get_bit(32) & (self.view_dx.q.val().get_bits::<32>(0) != 0);
+        self.par_dym.d.next = self.dy_abs.val();
+        self.par_dyn.d.next =
+            self.view_dy.q.val().get_bit(32) & (self.view_dy.q.val().get_bits::<32>(0) != 0);
+        self.par_dy_pos.d.next =
+            !self.view_dy.q.val().get_bit(32) & (self.view_dy.q.val().get_bits::<32>(0) != 0);
         self.memory.read_clock.next = self.clock.val();
         self.memory.write_clock.next = self.clock.val();
         self.memory.write_enable.next =

@@ -214,6 +214,7 @@ clocked!(
     [] hdl::cube3::trilin::Trilin,
     [] hdl::common::shader::Shader,
     [] hdl::common::lighting::Lighting,
+    [] hdl::common::split_mul_add::SplitMulAddUnorm,
 );
 
 /// A moment of a clock-by-clock testbench: before rising edge `t` (set

@@ -5,7 +5,8 @@
 //! weighting, for composite, first-opaque, X-ray and MIP, with edge and
 //! invalid voxels and gradients up to full scale, and at normal widths 3, 5,
 //! 6 and 8 bits; the tables preloaded, and
-//! loaded by the host through the host port.
+//! loaded by the host through the host port; and the lighting and the
+//! shading's multiply-add alone.
 //!
 //! The `valid` flag is compared for MIP, where it means what the golden
 //! model's does (the voxel takes part in the maximum). In the other modes the
@@ -298,5 +299,62 @@ fn lighting_saturates_as_the_golden_model_on_any_register() {
                 },
             );
         }
+    }
+}
+
+/// `hdl::common::split_mul_add` alone: `sat(mul(a, b) + c)` against
+/// `golden_model::fixed::mul_unorm` and a saturated add, every operand
+/// triple at 4 bits and the extremes with random words at 8 and 16.
+#[test]
+fn split_mul_add_is_the_saturated_sum_of_the_unorm_product() {
+    use golden_model::fixed::{max_of, mul_unorm};
+    use hdl::common::split_mul_add::{SplitMulAddUnorm, LATENCY as MUL_ADD_LATENCY};
+    for bits in [4, 8, 16] {
+        let m = max_of(bits);
+        let mut r = Vectors::new(bits as u64);
+        let triples: Vec<[u32; 3]> = if bits == 4 {
+            (0..16 * 16 * 16)
+                .map(|i| [i & 15, (i >> 4) & 15, i >> 8])
+                .collect()
+        } else {
+            let edge = [0, 1, m / 2, m - 1, m];
+            let mut v: Vec<[u32; 3]> = edge
+                .iter()
+                .flat_map(|&a| edge.iter().flat_map(move |&b| edge.map(|c| [a, b, c])))
+                .collect();
+            v.extend((0..N).map(|_| [r.below(m + 1), r.below(m + 1), r.below(m + 1)]));
+            v
+        };
+        let expected: Vec<u32> = triples
+            .iter()
+            .map(|&[a, b, c]| (mul_unorm(a, b, bits) + c).min(m))
+            .collect();
+        let mut uut = SplitMulAddUnorm::enabled(bits, true);
+        uut.connect_all();
+        let n = triples.len();
+        let label = format!("{bits}-bit split multiply-add");
+        run_clocks(
+            uut,
+            n + MUL_ADD_LATENCY,
+            &label.clone(),
+            move |e, x| match e {
+                Edge::Before(t) => {
+                    let [a, b, c] = triples[t.min(n - 1)];
+                    x.a.next = (a as u64).to_bits();
+                    x.b.next = (b as u64).to_bits();
+                    x.c.next = (c as u64).to_bits();
+                }
+                Edge::After(t) if t + 1 >= MUL_ADD_LATENCY && t + 1 < MUL_ADD_LATENCY + n => {
+                    let i = t + 1 - MUL_ADD_LATENCY;
+                    let got = x.y.val().to_u32();
+                    assert_eq!(
+                        got, expected[i],
+                        "{label}: operands {:?} (clock {t})",
+                        triples[i]
+                    );
+                }
+                _ => {}
+            },
+        );
     }
 }

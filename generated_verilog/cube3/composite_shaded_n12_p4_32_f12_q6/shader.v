@@ -280,23 +280,20 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  valid_q$16$d;
     wire  valid_q$16$q;
     reg  valid_q$16$clock;
-    reg  [15:0] specular_q$d;
-    wire  [15:0] specular_q$q;
-    reg  specular_q$clock;
-    reg  [15:0] specular_qq$d;
-    wire  [15:0] specular_qq$q;
-    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
+    reg  [15:0] lit_r$c;
     wire  [15:0] lit_r$y;
     reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
+    reg  [15:0] lit_g$c;
     wire  [15:0] lit_g$y;
     reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
+    reg  [15:0] lit_b$c;
     wire  [15:0] lit_b$y;
     reg  [15:0] shaded_q$0$d;
     wire  [15:0] shaded_q$0$q;
@@ -341,9 +338,6 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] alpha;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
-    reg  [31:0] sum_r;
-    reg  [31:0] sum_g;
-    reg  [31:0] sum_b;
     
     // Sub module instances
     top$pipeline$shade$0$lut lut(
@@ -723,32 +717,25 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         .q(valid_q$16$q),
         .clock(valid_q$16$clock)
     );
-    top$pipeline$shade$0$specular_q specular_q(
-        .d(specular_q$d),
-        .q(specular_q$q),
-        .clock(specular_q$clock)
-    );
-    top$pipeline$shade$0$specular_qq specular_qq(
-        .d(specular_qq$d),
-        .q(specular_qq$q),
-        .clock(specular_qq$clock)
-    );
     top$pipeline$shade$0$lit_r lit_r(
         .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
+        .c(lit_r$c),
         .y(lit_r$y)
     );
     top$pipeline$shade$0$lit_g lit_g(
         .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
+        .c(lit_g$c),
         .y(lit_g$y)
     );
     top$pipeline$shade$0$lit_b lit_b(
         .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
+        .c(lit_b$c),
         .y(lit_b$y)
     );
     top$pipeline$shade$0$shaded_q$0 shaded_q$0(
@@ -812,14 +799,10 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
-        specular_q$clock = clock;
-        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        specular_q$d = specular_q$q;
-        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -1024,32 +1007,21 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        specular_q$d = specular;
-        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
+        lit_r$c = specular;
+        lit_g$c = specular;
+        lit_b$c = specular;
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
-        shaded_q$0$d = 16'(sum_r);
-        if (sum_r > 32'(m_max)) begin
-            shaded_q$0$d = m_max;
-        end
-        shaded_q$1$d = 16'(sum_g);
-        if (sum_g > 32'(m_max)) begin
-            shaded_q$1$d = m_max;
-        end
-        shaded_q$2$d = 16'(sum_b);
-        if (sum_b > 32'(m_max)) begin
-            shaded_q$2$d = m_max;
-        end
+        shaded_q$0$d = lit_r$y;
+        shaded_q$1$d = lit_g$y;
+        shaded_q$2$d = lit_b$y;
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
@@ -1612,6 +1584,8 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
     reg  [31:0] t_ph$0;
     reg  [31:0] t_ph$1;
     reg  [31:0] t_ph$2;
+    reg  [31:0] c_l;
+    reg  [31:0] c_h;
     reg  [15:0] n2;
     reg  [31:0] dot_l;
     reg  [31:0] dot_h;
@@ -1991,32 +1965,34 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
         n2_q$d = n2;
         t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$p;
+            t_pl$0 = ~p_l$0$p;
         end
         t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$p;
+            t_ph$0 = ~p_h$0$p;
         end
         t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$p;
+            t_pl$1 = ~p_l$1$p;
         end
         t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$p;
+            t_ph$1 = ~p_h$1$p;
         end
         t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$p;
+            t_pl$2 = ~p_l$2$p;
         end
         t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$p;
+            t_ph$2 = ~p_h$2$p;
         end
+        c_l = 32'(sl_q$0$q) + 32'(sl_q$1$q) + 32'(sl_q$2$q);
+        c_h = 32'(sh_q$0$q) + 32'(sh_q$1$q) + 32'(sh_q$2$q);
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
-        third_l$d = t_pl$2;
-        third_h$d = t_ph$2;
+        third_l$d = t_pl$2 + c_l;
+        third_h$d = t_ph$2 + c_h;
         rnorm$address = n2_q$q;
         rn$d = rnorm$data;
         dot_l = pair_l$q + third_l$q;
@@ -7388,27 +7364,38 @@ module top$pipeline$shade$0$lighting$u_l(clock,a,b,p);
     end
     `endif
 endmodule // top$pipeline$shade$0$lighting$u_l
-module top$pipeline$shade$0$lit_b(clock,a,b,y);
+module top$pipeline$shade$0$lit_b(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$0$lit_b$p p(
@@ -7417,29 +7404,63 @@ module top$pipeline$shade$0$lit_b(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$0$lit_b$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$0$lit_b$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$0$lit_b$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$0$lit_b
+module top$pipeline$shade$0$lit_b$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_b$c_q
 module top$pipeline$shade$0$lit_b$p(clock,a,b,p);
     
     // Module arguments
@@ -7478,13 +7499,13 @@ endmodule // top$pipeline$shade$0$lit_b$p
 module top$pipeline$shade$0$lit_b$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -7492,27 +7513,55 @@ module top$pipeline$shade$0$lit_b$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$lit_b$t
-module top$pipeline$shade$0$lit_g(clock,a,b,y);
+module top$pipeline$shade$0$lit_b$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_b$t_c
+module top$pipeline$shade$0$lit_g(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$0$lit_g$p p(
@@ -7521,29 +7570,63 @@ module top$pipeline$shade$0$lit_g(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$0$lit_g$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$0$lit_g$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$0$lit_g$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$0$lit_g
+module top$pipeline$shade$0$lit_g$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_g$c_q
 module top$pipeline$shade$0$lit_g$p(clock,a,b,p);
     
     // Module arguments
@@ -7582,13 +7665,13 @@ endmodule // top$pipeline$shade$0$lit_g$p
 module top$pipeline$shade$0$lit_g$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -7596,27 +7679,55 @@ module top$pipeline$shade$0$lit_g$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$lit_g$t
-module top$pipeline$shade$0$lit_r(clock,a,b,y);
+module top$pipeline$shade$0$lit_g$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_g$t_c
+module top$pipeline$shade$0$lit_r(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$0$lit_r$p p(
@@ -7625,29 +7736,63 @@ module top$pipeline$shade$0$lit_r(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$0$lit_r$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$0$lit_r$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$0$lit_r$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$0$lit_r
+module top$pipeline$shade$0$lit_r$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_r$c_q
 module top$pipeline$shade$0$lit_r$p(clock,a,b,p);
     
     // Module arguments
@@ -7686,13 +7831,13 @@ endmodule // top$pipeline$shade$0$lit_r$p
 module top$pipeline$shade$0$lit_r$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -7700,6 +7845,23 @@ module top$pipeline$shade$0$lit_r$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$lit_r$t
+module top$pipeline$shade$0$lit_r$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_r$t_c
 module top$pipeline$shade$0$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -9360,40 +9522,6 @@ module top$pipeline$shade$0$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$shaded_q$2
-module top$pipeline$shade$0$specular_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$0$specular_q
-module top$pipeline$shade$0$specular_qq(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$0$specular_qq
 module top$pipeline$shade$0$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -10237,23 +10365,20 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  valid_q$16$d;
     wire  valid_q$16$q;
     reg  valid_q$16$clock;
-    reg  [15:0] specular_q$d;
-    wire  [15:0] specular_q$q;
-    reg  specular_q$clock;
-    reg  [15:0] specular_qq$d;
-    wire  [15:0] specular_qq$q;
-    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
+    reg  [15:0] lit_r$c;
     wire  [15:0] lit_r$y;
     reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
+    reg  [15:0] lit_g$c;
     wire  [15:0] lit_g$y;
     reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
+    reg  [15:0] lit_b$c;
     wire  [15:0] lit_b$y;
     reg  [15:0] shaded_q$0$d;
     wire  [15:0] shaded_q$0$q;
@@ -10298,9 +10423,6 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] alpha;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
-    reg  [31:0] sum_r;
-    reg  [31:0] sum_g;
-    reg  [31:0] sum_b;
     
     // Sub module instances
     top$pipeline$shade$1$lut lut(
@@ -10680,32 +10802,25 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         .q(valid_q$16$q),
         .clock(valid_q$16$clock)
     );
-    top$pipeline$shade$1$specular_q specular_q(
-        .d(specular_q$d),
-        .q(specular_q$q),
-        .clock(specular_q$clock)
-    );
-    top$pipeline$shade$1$specular_qq specular_qq(
-        .d(specular_qq$d),
-        .q(specular_qq$q),
-        .clock(specular_qq$clock)
-    );
     top$pipeline$shade$1$lit_r lit_r(
         .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
+        .c(lit_r$c),
         .y(lit_r$y)
     );
     top$pipeline$shade$1$lit_g lit_g(
         .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
+        .c(lit_g$c),
         .y(lit_g$y)
     );
     top$pipeline$shade$1$lit_b lit_b(
         .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
+        .c(lit_b$c),
         .y(lit_b$y)
     );
     top$pipeline$shade$1$shaded_q$0 shaded_q$0(
@@ -10769,14 +10884,10 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
-        specular_q$clock = clock;
-        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        specular_q$d = specular_q$q;
-        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -10981,32 +11092,21 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        specular_q$d = specular;
-        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
+        lit_r$c = specular;
+        lit_g$c = specular;
+        lit_b$c = specular;
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
-        shaded_q$0$d = 16'(sum_r);
-        if (sum_r > 32'(m_max)) begin
-            shaded_q$0$d = m_max;
-        end
-        shaded_q$1$d = 16'(sum_g);
-        if (sum_g > 32'(m_max)) begin
-            shaded_q$1$d = m_max;
-        end
-        shaded_q$2$d = 16'(sum_b);
-        if (sum_b > 32'(m_max)) begin
-            shaded_q$2$d = m_max;
-        end
+        shaded_q$0$d = lit_r$y;
+        shaded_q$1$d = lit_g$y;
+        shaded_q$2$d = lit_b$y;
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
@@ -11569,6 +11669,8 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
     reg  [31:0] t_ph$0;
     reg  [31:0] t_ph$1;
     reg  [31:0] t_ph$2;
+    reg  [31:0] c_l;
+    reg  [31:0] c_h;
     reg  [15:0] n2;
     reg  [31:0] dot_l;
     reg  [31:0] dot_h;
@@ -11948,32 +12050,34 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
         n2_q$d = n2;
         t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$p;
+            t_pl$0 = ~p_l$0$p;
         end
         t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$p;
+            t_ph$0 = ~p_h$0$p;
         end
         t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$p;
+            t_pl$1 = ~p_l$1$p;
         end
         t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$p;
+            t_ph$1 = ~p_h$1$p;
         end
         t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$p;
+            t_pl$2 = ~p_l$2$p;
         end
         t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$p;
+            t_ph$2 = ~p_h$2$p;
         end
+        c_l = 32'(sl_q$0$q) + 32'(sl_q$1$q) + 32'(sl_q$2$q);
+        c_h = 32'(sh_q$0$q) + 32'(sh_q$1$q) + 32'(sh_q$2$q);
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
-        third_l$d = t_pl$2;
-        third_h$d = t_ph$2;
+        third_l$d = t_pl$2 + c_l;
+        third_h$d = t_ph$2 + c_h;
         rnorm$address = n2_q$q;
         rn$d = rnorm$data;
         dot_l = pair_l$q + third_l$q;
@@ -17345,27 +17449,38 @@ module top$pipeline$shade$1$lighting$u_l(clock,a,b,p);
     end
     `endif
 endmodule // top$pipeline$shade$1$lighting$u_l
-module top$pipeline$shade$1$lit_b(clock,a,b,y);
+module top$pipeline$shade$1$lit_b(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$1$lit_b$p p(
@@ -17374,29 +17489,63 @@ module top$pipeline$shade$1$lit_b(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$1$lit_b$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$1$lit_b$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$1$lit_b$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$1$lit_b
+module top$pipeline$shade$1$lit_b$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_b$c_q
 module top$pipeline$shade$1$lit_b$p(clock,a,b,p);
     
     // Module arguments
@@ -17435,13 +17584,13 @@ endmodule // top$pipeline$shade$1$lit_b$p
 module top$pipeline$shade$1$lit_b$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -17449,27 +17598,55 @@ module top$pipeline$shade$1$lit_b$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$lit_b$t
-module top$pipeline$shade$1$lit_g(clock,a,b,y);
+module top$pipeline$shade$1$lit_b$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_b$t_c
+module top$pipeline$shade$1$lit_g(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$1$lit_g$p p(
@@ -17478,29 +17655,63 @@ module top$pipeline$shade$1$lit_g(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$1$lit_g$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$1$lit_g$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$1$lit_g$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$1$lit_g
+module top$pipeline$shade$1$lit_g$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_g$c_q
 module top$pipeline$shade$1$lit_g$p(clock,a,b,p);
     
     // Module arguments
@@ -17539,13 +17750,13 @@ endmodule // top$pipeline$shade$1$lit_g$p
 module top$pipeline$shade$1$lit_g$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -17553,27 +17764,55 @@ module top$pipeline$shade$1$lit_g$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$lit_g$t
-module top$pipeline$shade$1$lit_r(clock,a,b,y);
+module top$pipeline$shade$1$lit_g$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_g$t_c
+module top$pipeline$shade$1$lit_r(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$1$lit_r$p p(
@@ -17582,29 +17821,63 @@ module top$pipeline$shade$1$lit_r(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$1$lit_r$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$1$lit_r$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$1$lit_r$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$1$lit_r
+module top$pipeline$shade$1$lit_r$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_r$c_q
 module top$pipeline$shade$1$lit_r$p(clock,a,b,p);
     
     // Module arguments
@@ -17643,13 +17916,13 @@ endmodule // top$pipeline$shade$1$lit_r$p
 module top$pipeline$shade$1$lit_r$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -17657,6 +17930,23 @@ module top$pipeline$shade$1$lit_r$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$lit_r$t
+module top$pipeline$shade$1$lit_r$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_r$t_c
 module top$pipeline$shade$1$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -19317,40 +19607,6 @@ module top$pipeline$shade$1$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$shaded_q$2
-module top$pipeline$shade$1$specular_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$1$specular_q
-module top$pipeline$shade$1$specular_qq(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$1$specular_qq
 module top$pipeline$shade$1$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -20194,23 +20450,20 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
     reg  valid_q$16$d;
     wire  valid_q$16$q;
     reg  valid_q$16$clock;
-    reg  [15:0] specular_q$d;
-    wire  [15:0] specular_q$q;
-    reg  specular_q$clock;
-    reg  [15:0] specular_qq$d;
-    wire  [15:0] specular_qq$q;
-    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
+    reg  [15:0] lit_r$c;
     wire  [15:0] lit_r$y;
     reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
+    reg  [15:0] lit_g$c;
     wire  [15:0] lit_g$y;
     reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
+    reg  [15:0] lit_b$c;
     wire  [15:0] lit_b$y;
     reg  [15:0] shaded_q$0$d;
     wire  [15:0] shaded_q$0$q;
@@ -20255,9 +20508,6 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] alpha;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
-    reg  [31:0] sum_r;
-    reg  [31:0] sum_g;
-    reg  [31:0] sum_b;
     
     // Sub module instances
     top$pipeline$shade$2$lut lut(
@@ -20637,32 +20887,25 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
         .q(valid_q$16$q),
         .clock(valid_q$16$clock)
     );
-    top$pipeline$shade$2$specular_q specular_q(
-        .d(specular_q$d),
-        .q(specular_q$q),
-        .clock(specular_q$clock)
-    );
-    top$pipeline$shade$2$specular_qq specular_qq(
-        .d(specular_qq$d),
-        .q(specular_qq$q),
-        .clock(specular_qq$clock)
-    );
     top$pipeline$shade$2$lit_r lit_r(
         .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
+        .c(lit_r$c),
         .y(lit_r$y)
     );
     top$pipeline$shade$2$lit_g lit_g(
         .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
+        .c(lit_g$c),
         .y(lit_g$y)
     );
     top$pipeline$shade$2$lit_b lit_b(
         .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
+        .c(lit_b$c),
         .y(lit_b$y)
     );
     top$pipeline$shade$2$shaded_q$0 shaded_q$0(
@@ -20726,14 +20969,10 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
-        specular_q$clock = clock;
-        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        specular_q$d = specular_q$q;
-        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -20938,32 +21177,21 @@ module top$pipeline$shade$2(clock,host_write,host_address,host_data,value,invali
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        specular_q$d = specular;
-        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
+        lit_r$c = specular;
+        lit_g$c = specular;
+        lit_b$c = specular;
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
-        shaded_q$0$d = 16'(sum_r);
-        if (sum_r > 32'(m_max)) begin
-            shaded_q$0$d = m_max;
-        end
-        shaded_q$1$d = 16'(sum_g);
-        if (sum_g > 32'(m_max)) begin
-            shaded_q$1$d = m_max;
-        end
-        shaded_q$2$d = 16'(sum_b);
-        if (sum_b > 32'(m_max)) begin
-            shaded_q$2$d = m_max;
-        end
+        shaded_q$0$d = lit_r$y;
+        shaded_q$1$d = lit_g$y;
+        shaded_q$2$d = lit_b$y;
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
@@ -21526,6 +21754,8 @@ module top$pipeline$shade$2$lighting(clock,host_write,host_address,host_data,q_n
     reg  [31:0] t_ph$0;
     reg  [31:0] t_ph$1;
     reg  [31:0] t_ph$2;
+    reg  [31:0] c_l;
+    reg  [31:0] c_h;
     reg  [15:0] n2;
     reg  [31:0] dot_l;
     reg  [31:0] dot_h;
@@ -21905,32 +22135,34 @@ module top$pipeline$shade$2$lighting(clock,host_write,host_address,host_data,q_n
         n2_q$d = n2;
         t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$p;
+            t_pl$0 = ~p_l$0$p;
         end
         t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$p;
+            t_ph$0 = ~p_h$0$p;
         end
         t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$p;
+            t_pl$1 = ~p_l$1$p;
         end
         t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$p;
+            t_ph$1 = ~p_h$1$p;
         end
         t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$p;
+            t_pl$2 = ~p_l$2$p;
         end
         t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$p;
+            t_ph$2 = ~p_h$2$p;
         end
+        c_l = 32'(sl_q$0$q) + 32'(sl_q$1$q) + 32'(sl_q$2$q);
+        c_h = 32'(sh_q$0$q) + 32'(sh_q$1$q) + 32'(sh_q$2$q);
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
-        third_l$d = t_pl$2;
-        third_h$d = t_ph$2;
+        third_l$d = t_pl$2 + c_l;
+        third_h$d = t_ph$2 + c_h;
         rnorm$address = n2_q$q;
         rn$d = rnorm$data;
         dot_l = pair_l$q + third_l$q;
@@ -27302,27 +27534,38 @@ module top$pipeline$shade$2$lighting$u_l(clock,a,b,p);
     end
     `endif
 endmodule // top$pipeline$shade$2$lighting$u_l
-module top$pipeline$shade$2$lit_b(clock,a,b,y);
+module top$pipeline$shade$2$lit_b(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$2$lit_b$p p(
@@ -27331,29 +27574,63 @@ module top$pipeline$shade$2$lit_b(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$2$lit_b$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$2$lit_b$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$2$lit_b$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$2$lit_b
+module top$pipeline$shade$2$lit_b$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$lit_b$c_q
 module top$pipeline$shade$2$lit_b$p(clock,a,b,p);
     
     // Module arguments
@@ -27392,13 +27669,13 @@ endmodule // top$pipeline$shade$2$lit_b$p
 module top$pipeline$shade$2$lit_b$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -27406,27 +27683,55 @@ module top$pipeline$shade$2$lit_b$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$2$lit_b$t
-module top$pipeline$shade$2$lit_g(clock,a,b,y);
+module top$pipeline$shade$2$lit_b$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$lit_b$t_c
+module top$pipeline$shade$2$lit_g(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$2$lit_g$p p(
@@ -27435,29 +27740,63 @@ module top$pipeline$shade$2$lit_g(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$2$lit_g$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$2$lit_g$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$2$lit_g$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$2$lit_g
+module top$pipeline$shade$2$lit_g$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$lit_g$c_q
 module top$pipeline$shade$2$lit_g$p(clock,a,b,p);
     
     // Module arguments
@@ -27496,13 +27835,13 @@ endmodule // top$pipeline$shade$2$lit_g$p
 module top$pipeline$shade$2$lit_g$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -27510,27 +27849,55 @@ module top$pipeline$shade$2$lit_g$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$2$lit_g$t
-module top$pipeline$shade$2$lit_r(clock,a,b,y);
+module top$pipeline$shade$2$lit_g$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$lit_g$t_c
+module top$pipeline$shade$2$lit_r(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$2$lit_r$p p(
@@ -27539,29 +27906,63 @@ module top$pipeline$shade$2$lit_r(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$2$lit_r$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$2$lit_r$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$2$lit_r$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$2$lit_r
+module top$pipeline$shade$2$lit_r$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$lit_r$c_q
 module top$pipeline$shade$2$lit_r$p(clock,a,b,p);
     
     // Module arguments
@@ -27600,13 +28001,13 @@ endmodule // top$pipeline$shade$2$lit_r$p
 module top$pipeline$shade$2$lit_r$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -27614,6 +28015,23 @@ module top$pipeline$shade$2$lit_r$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$2$lit_r$t
+module top$pipeline$shade$2$lit_r$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$2$lit_r$t_c
 module top$pipeline$shade$2$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -29274,40 +29692,6 @@ module top$pipeline$shade$2$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$2$shaded_q$2
-module top$pipeline$shade$2$specular_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$2$specular_q
-module top$pipeline$shade$2$specular_qq(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$2$specular_qq
 module top$pipeline$shade$2$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -30151,23 +30535,20 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
     reg  valid_q$16$d;
     wire  valid_q$16$q;
     reg  valid_q$16$clock;
-    reg  [15:0] specular_q$d;
-    wire  [15:0] specular_q$q;
-    reg  specular_q$clock;
-    reg  [15:0] specular_qq$d;
-    wire  [15:0] specular_qq$q;
-    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
+    reg  [15:0] lit_r$c;
     wire  [15:0] lit_r$y;
     reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
+    reg  [15:0] lit_g$c;
     wire  [15:0] lit_g$y;
     reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
+    reg  [15:0] lit_b$c;
     wire  [15:0] lit_b$y;
     reg  [15:0] shaded_q$0$d;
     wire  [15:0] shaded_q$0$q;
@@ -30212,9 +30593,6 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] alpha;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
-    reg  [31:0] sum_r;
-    reg  [31:0] sum_g;
-    reg  [31:0] sum_b;
     
     // Sub module instances
     top$pipeline$shade$3$lut lut(
@@ -30594,32 +30972,25 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
         .q(valid_q$16$q),
         .clock(valid_q$16$clock)
     );
-    top$pipeline$shade$3$specular_q specular_q(
-        .d(specular_q$d),
-        .q(specular_q$q),
-        .clock(specular_q$clock)
-    );
-    top$pipeline$shade$3$specular_qq specular_qq(
-        .d(specular_qq$d),
-        .q(specular_qq$q),
-        .clock(specular_qq$clock)
-    );
     top$pipeline$shade$3$lit_r lit_r(
         .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
+        .c(lit_r$c),
         .y(lit_r$y)
     );
     top$pipeline$shade$3$lit_g lit_g(
         .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
+        .c(lit_g$c),
         .y(lit_g$y)
     );
     top$pipeline$shade$3$lit_b lit_b(
         .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
+        .c(lit_b$c),
         .y(lit_b$y)
     );
     top$pipeline$shade$3$shaded_q$0 shaded_q$0(
@@ -30683,14 +31054,10 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
-        specular_q$clock = clock;
-        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        specular_q$d = specular_q$q;
-        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -30895,32 +31262,21 @@ module top$pipeline$shade$3(clock,host_write,host_address,host_data,value,invali
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        specular_q$d = specular;
-        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
+        lit_r$c = specular;
+        lit_g$c = specular;
+        lit_b$c = specular;
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
-        shaded_q$0$d = 16'(sum_r);
-        if (sum_r > 32'(m_max)) begin
-            shaded_q$0$d = m_max;
-        end
-        shaded_q$1$d = 16'(sum_g);
-        if (sum_g > 32'(m_max)) begin
-            shaded_q$1$d = m_max;
-        end
-        shaded_q$2$d = 16'(sum_b);
-        if (sum_b > 32'(m_max)) begin
-            shaded_q$2$d = m_max;
-        end
+        shaded_q$0$d = lit_r$y;
+        shaded_q$1$d = lit_g$y;
+        shaded_q$2$d = lit_b$y;
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
@@ -31483,6 +31839,8 @@ module top$pipeline$shade$3$lighting(clock,host_write,host_address,host_data,q_n
     reg  [31:0] t_ph$0;
     reg  [31:0] t_ph$1;
     reg  [31:0] t_ph$2;
+    reg  [31:0] c_l;
+    reg  [31:0] c_h;
     reg  [15:0] n2;
     reg  [31:0] dot_l;
     reg  [31:0] dot_h;
@@ -31862,32 +32220,34 @@ module top$pipeline$shade$3$lighting(clock,host_write,host_address,host_data,q_n
         n2_q$d = n2;
         t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$p;
+            t_pl$0 = ~p_l$0$p;
         end
         t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$p;
+            t_ph$0 = ~p_h$0$p;
         end
         t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$p;
+            t_pl$1 = ~p_l$1$p;
         end
         t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$p;
+            t_ph$1 = ~p_h$1$p;
         end
         t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$p;
+            t_pl$2 = ~p_l$2$p;
         end
         t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$p;
+            t_ph$2 = ~p_h$2$p;
         end
+        c_l = 32'(sl_q$0$q) + 32'(sl_q$1$q) + 32'(sl_q$2$q);
+        c_h = 32'(sh_q$0$q) + 32'(sh_q$1$q) + 32'(sh_q$2$q);
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
-        third_l$d = t_pl$2;
-        third_h$d = t_ph$2;
+        third_l$d = t_pl$2 + c_l;
+        third_h$d = t_ph$2 + c_h;
         rnorm$address = n2_q$q;
         rn$d = rnorm$data;
         dot_l = pair_l$q + third_l$q;
@@ -37259,27 +37619,38 @@ module top$pipeline$shade$3$lighting$u_l(clock,a,b,p);
     end
     `endif
 endmodule // top$pipeline$shade$3$lighting$u_l
-module top$pipeline$shade$3$lit_b(clock,a,b,y);
+module top$pipeline$shade$3$lit_b(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$3$lit_b$p p(
@@ -37288,29 +37659,63 @@ module top$pipeline$shade$3$lit_b(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$3$lit_b$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$3$lit_b$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$3$lit_b$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$3$lit_b
+module top$pipeline$shade$3$lit_b$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$lit_b$c_q
 module top$pipeline$shade$3$lit_b$p(clock,a,b,p);
     
     // Module arguments
@@ -37349,13 +37754,13 @@ endmodule // top$pipeline$shade$3$lit_b$p
 module top$pipeline$shade$3$lit_b$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -37363,27 +37768,55 @@ module top$pipeline$shade$3$lit_b$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$3$lit_b$t
-module top$pipeline$shade$3$lit_g(clock,a,b,y);
+module top$pipeline$shade$3$lit_b$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$lit_b$t_c
+module top$pipeline$shade$3$lit_g(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$3$lit_g$p p(
@@ -37392,29 +37825,63 @@ module top$pipeline$shade$3$lit_g(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$3$lit_g$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$3$lit_g$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$3$lit_g$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$3$lit_g
+module top$pipeline$shade$3$lit_g$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$lit_g$c_q
 module top$pipeline$shade$3$lit_g$p(clock,a,b,p);
     
     // Module arguments
@@ -37453,13 +37920,13 @@ endmodule // top$pipeline$shade$3$lit_g$p
 module top$pipeline$shade$3$lit_g$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -37467,27 +37934,55 @@ module top$pipeline$shade$3$lit_g$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$3$lit_g$t
-module top$pipeline$shade$3$lit_r(clock,a,b,y);
+module top$pipeline$shade$3$lit_g$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$lit_g$t_c
+module top$pipeline$shade$3$lit_r(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$3$lit_r$p p(
@@ -37496,29 +37991,63 @@ module top$pipeline$shade$3$lit_r(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$3$lit_r$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$3$lit_r$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$3$lit_r$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$3$lit_r
+module top$pipeline$shade$3$lit_r$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$lit_r$c_q
 module top$pipeline$shade$3$lit_r$p(clock,a,b,p);
     
     // Module arguments
@@ -37557,13 +38086,13 @@ endmodule // top$pipeline$shade$3$lit_r$p
 module top$pipeline$shade$3$lit_r$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -37571,6 +38100,23 @@ module top$pipeline$shade$3$lit_r$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$3$lit_r$t
+module top$pipeline$shade$3$lit_r$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$3$lit_r$t_c
 module top$pipeline$shade$3$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -39231,40 +39777,6 @@ module top$pipeline$shade$3$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$3$shaded_q$2
-module top$pipeline$shade$3$specular_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$3$specular_q
-module top$pipeline$shade$3$specular_qq(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$3$specular_qq
 module top$pipeline$shade$3$valid_q$0(d,q,clock);
     
     // Module arguments

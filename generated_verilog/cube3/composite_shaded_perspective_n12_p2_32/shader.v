@@ -280,23 +280,20 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  valid_q$16$d;
     wire  valid_q$16$q;
     reg  valid_q$16$clock;
-    reg  [15:0] specular_q$d;
-    wire  [15:0] specular_q$q;
-    reg  specular_q$clock;
-    reg  [15:0] specular_qq$d;
-    wire  [15:0] specular_qq$q;
-    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
+    reg  [15:0] lit_r$c;
     wire  [15:0] lit_r$y;
     reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
+    reg  [15:0] lit_g$c;
     wire  [15:0] lit_g$y;
     reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
+    reg  [15:0] lit_b$c;
     wire  [15:0] lit_b$y;
     reg  [15:0] shaded_q$0$d;
     wire  [15:0] shaded_q$0$q;
@@ -341,9 +338,6 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] alpha;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
-    reg  [31:0] sum_r;
-    reg  [31:0] sum_g;
-    reg  [31:0] sum_b;
     
     // Sub module instances
     top$pipeline$shade$0$lut lut(
@@ -723,32 +717,25 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
         .q(valid_q$16$q),
         .clock(valid_q$16$clock)
     );
-    top$pipeline$shade$0$specular_q specular_q(
-        .d(specular_q$d),
-        .q(specular_q$q),
-        .clock(specular_q$clock)
-    );
-    top$pipeline$shade$0$specular_qq specular_qq(
-        .d(specular_qq$d),
-        .q(specular_qq$q),
-        .clock(specular_qq$clock)
-    );
     top$pipeline$shade$0$lit_r lit_r(
         .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
+        .c(lit_r$c),
         .y(lit_r$y)
     );
     top$pipeline$shade$0$lit_g lit_g(
         .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
+        .c(lit_g$c),
         .y(lit_g$y)
     );
     top$pipeline$shade$0$lit_b lit_b(
         .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
+        .c(lit_b$c),
         .y(lit_b$y)
     );
     top$pipeline$shade$0$shaded_q$0 shaded_q$0(
@@ -812,14 +799,10 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
-        specular_q$clock = clock;
-        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        specular_q$d = specular_q$q;
-        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -1024,32 +1007,21 @@ module top$pipeline$shade$0(clock,host_write,host_address,host_data,value,invali
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        specular_q$d = specular;
-        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
+        lit_r$c = specular;
+        lit_g$c = specular;
+        lit_b$c = specular;
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
-        shaded_q$0$d = 16'(sum_r);
-        if (sum_r > 32'(m_max)) begin
-            shaded_q$0$d = m_max;
-        end
-        shaded_q$1$d = 16'(sum_g);
-        if (sum_g > 32'(m_max)) begin
-            shaded_q$1$d = m_max;
-        end
-        shaded_q$2$d = 16'(sum_b);
-        if (sum_b > 32'(m_max)) begin
-            shaded_q$2$d = m_max;
-        end
+        shaded_q$0$d = lit_r$y;
+        shaded_q$1$d = lit_g$y;
+        shaded_q$2$d = lit_b$y;
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
@@ -1612,6 +1584,8 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
     reg  [31:0] t_ph$0;
     reg  [31:0] t_ph$1;
     reg  [31:0] t_ph$2;
+    reg  [31:0] c_l;
+    reg  [31:0] c_h;
     reg  [15:0] n2;
     reg  [31:0] dot_l;
     reg  [31:0] dot_h;
@@ -1991,32 +1965,34 @@ module top$pipeline$shade$0$lighting(clock,host_write,host_address,host_data,q_n
         n2_q$d = n2;
         t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$p;
+            t_pl$0 = ~p_l$0$p;
         end
         t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$p;
+            t_ph$0 = ~p_h$0$p;
         end
         t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$p;
+            t_pl$1 = ~p_l$1$p;
         end
         t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$p;
+            t_ph$1 = ~p_h$1$p;
         end
         t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$p;
+            t_pl$2 = ~p_l$2$p;
         end
         t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$p;
+            t_ph$2 = ~p_h$2$p;
         end
+        c_l = 32'(sl_q$0$q) + 32'(sl_q$1$q) + 32'(sl_q$2$q);
+        c_h = 32'(sh_q$0$q) + 32'(sh_q$1$q) + 32'(sh_q$2$q);
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
-        third_l$d = t_pl$2;
-        third_h$d = t_ph$2;
+        third_l$d = t_pl$2 + c_l;
+        third_h$d = t_ph$2 + c_h;
         rnorm$address = n2_q$q;
         rn$d = rnorm$data;
         dot_l = pair_l$q + third_l$q;
@@ -4232,27 +4208,38 @@ module top$pipeline$shade$0$lighting$u_l(clock,a,b,p);
        p <= 'h0;
     end
 endmodule // top$pipeline$shade$0$lighting$u_l
-module top$pipeline$shade$0$lit_b(clock,a,b,y);
+module top$pipeline$shade$0$lit_b(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$0$lit_b$p p(
@@ -4261,29 +4248,63 @@ module top$pipeline$shade$0$lit_b(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$0$lit_b$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$0$lit_b$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$0$lit_b$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$0$lit_b
+module top$pipeline$shade$0$lit_b$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_b$c_q
 module top$pipeline$shade$0$lit_b$p(clock,a,b,p);
     
     // Module arguments
@@ -4322,13 +4343,13 @@ endmodule // top$pipeline$shade$0$lit_b$p
 module top$pipeline$shade$0$lit_b$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -4336,27 +4357,55 @@ module top$pipeline$shade$0$lit_b$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$lit_b$t
-module top$pipeline$shade$0$lit_g(clock,a,b,y);
+module top$pipeline$shade$0$lit_b$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_b$t_c
+module top$pipeline$shade$0$lit_g(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$0$lit_g$p p(
@@ -4365,29 +4414,63 @@ module top$pipeline$shade$0$lit_g(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$0$lit_g$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$0$lit_g$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$0$lit_g$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$0$lit_g
+module top$pipeline$shade$0$lit_g$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_g$c_q
 module top$pipeline$shade$0$lit_g$p(clock,a,b,p);
     
     // Module arguments
@@ -4426,13 +4509,13 @@ endmodule // top$pipeline$shade$0$lit_g$p
 module top$pipeline$shade$0$lit_g$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -4440,27 +4523,55 @@ module top$pipeline$shade$0$lit_g$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$lit_g$t
-module top$pipeline$shade$0$lit_r(clock,a,b,y);
+module top$pipeline$shade$0$lit_g$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_g$t_c
+module top$pipeline$shade$0$lit_r(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$0$lit_r$p p(
@@ -4469,29 +4580,63 @@ module top$pipeline$shade$0$lit_r(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$0$lit_r$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$0$lit_r$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$0$lit_r$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$0$lit_r
+module top$pipeline$shade$0$lit_r$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_r$c_q
 module top$pipeline$shade$0$lit_r$p(clock,a,b,p);
     
     // Module arguments
@@ -4530,13 +4675,13 @@ endmodule // top$pipeline$shade$0$lit_r$p
 module top$pipeline$shade$0$lit_r$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -4544,6 +4689,23 @@ module top$pipeline$shade$0$lit_r$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$lit_r$t
+module top$pipeline$shade$0$lit_r$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$0$lit_r$t_c
 module top$pipeline$shade$0$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -6204,40 +6366,6 @@ module top$pipeline$shade$0$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$0$shaded_q$2
-module top$pipeline$shade$0$specular_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$0$specular_q
-module top$pipeline$shade$0$specular_qq(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$0$specular_qq
 module top$pipeline$shade$0$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -7081,23 +7209,20 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  valid_q$16$d;
     wire  valid_q$16$q;
     reg  valid_q$16$clock;
-    reg  [15:0] specular_q$d;
-    wire  [15:0] specular_q$q;
-    reg  specular_q$clock;
-    reg  [15:0] specular_qq$d;
-    wire  [15:0] specular_qq$q;
-    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
+    reg  [15:0] lit_r$c;
     wire  [15:0] lit_r$y;
     reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
+    reg  [15:0] lit_g$c;
     wire  [15:0] lit_g$y;
     reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
+    reg  [15:0] lit_b$c;
     wire  [15:0] lit_b$y;
     reg  [15:0] shaded_q$0$d;
     wire  [15:0] shaded_q$0$q;
@@ -7142,9 +7267,6 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] alpha;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
-    reg  [31:0] sum_r;
-    reg  [31:0] sum_g;
-    reg  [31:0] sum_b;
     
     // Sub module instances
     top$pipeline$shade$1$lut lut(
@@ -7524,32 +7646,25 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
         .q(valid_q$16$q),
         .clock(valid_q$16$clock)
     );
-    top$pipeline$shade$1$specular_q specular_q(
-        .d(specular_q$d),
-        .q(specular_q$q),
-        .clock(specular_q$clock)
-    );
-    top$pipeline$shade$1$specular_qq specular_qq(
-        .d(specular_qq$d),
-        .q(specular_qq$q),
-        .clock(specular_qq$clock)
-    );
     top$pipeline$shade$1$lit_r lit_r(
         .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
+        .c(lit_r$c),
         .y(lit_r$y)
     );
     top$pipeline$shade$1$lit_g lit_g(
         .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
+        .c(lit_g$c),
         .y(lit_g$y)
     );
     top$pipeline$shade$1$lit_b lit_b(
         .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
+        .c(lit_b$c),
         .y(lit_b$y)
     );
     top$pipeline$shade$1$shaded_q$0 shaded_q$0(
@@ -7613,14 +7728,10 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
-        specular_q$clock = clock;
-        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        specular_q$d = specular_q$q;
-        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -7825,32 +7936,21 @@ module top$pipeline$shade$1(clock,host_write,host_address,host_data,value,invali
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        specular_q$d = specular;
-        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
+        lit_r$c = specular;
+        lit_g$c = specular;
+        lit_b$c = specular;
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
-        shaded_q$0$d = 16'(sum_r);
-        if (sum_r > 32'(m_max)) begin
-            shaded_q$0$d = m_max;
-        end
-        shaded_q$1$d = 16'(sum_g);
-        if (sum_g > 32'(m_max)) begin
-            shaded_q$1$d = m_max;
-        end
-        shaded_q$2$d = 16'(sum_b);
-        if (sum_b > 32'(m_max)) begin
-            shaded_q$2$d = m_max;
-        end
+        shaded_q$0$d = lit_r$y;
+        shaded_q$1$d = lit_g$y;
+        shaded_q$2$d = lit_b$y;
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
@@ -8413,6 +8513,8 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
     reg  [31:0] t_ph$0;
     reg  [31:0] t_ph$1;
     reg  [31:0] t_ph$2;
+    reg  [31:0] c_l;
+    reg  [31:0] c_h;
     reg  [15:0] n2;
     reg  [31:0] dot_l;
     reg  [31:0] dot_h;
@@ -8792,32 +8894,34 @@ module top$pipeline$shade$1$lighting(clock,host_write,host_address,host_data,q_n
         n2_q$d = n2;
         t_pl$0 = p_l$0$p;
         if (sl_q$0$q) begin
-            t_pl$0 = 'h0 - p_l$0$p;
+            t_pl$0 = ~p_l$0$p;
         end
         t_ph$0 = p_h$0$p;
         if (sh_q$0$q) begin
-            t_ph$0 = 'h0 - p_h$0$p;
+            t_ph$0 = ~p_h$0$p;
         end
         t_pl$1 = p_l$1$p;
         if (sl_q$1$q) begin
-            t_pl$1 = 'h0 - p_l$1$p;
+            t_pl$1 = ~p_l$1$p;
         end
         t_ph$1 = p_h$1$p;
         if (sh_q$1$q) begin
-            t_ph$1 = 'h0 - p_h$1$p;
+            t_ph$1 = ~p_h$1$p;
         end
         t_pl$2 = p_l$2$p;
         if (sl_q$2$q) begin
-            t_pl$2 = 'h0 - p_l$2$p;
+            t_pl$2 = ~p_l$2$p;
         end
         t_ph$2 = p_h$2$p;
         if (sh_q$2$q) begin
-            t_ph$2 = 'h0 - p_h$2$p;
+            t_ph$2 = ~p_h$2$p;
         end
+        c_l = 32'(sl_q$0$q) + 32'(sl_q$1$q) + 32'(sl_q$2$q);
+        c_h = 32'(sh_q$0$q) + 32'(sh_q$1$q) + 32'(sh_q$2$q);
         pair_l$d = t_pl$0 + t_pl$1;
         pair_h$d = t_ph$0 + t_ph$1;
-        third_l$d = t_pl$2;
-        third_h$d = t_ph$2;
+        third_l$d = t_pl$2 + c_l;
+        third_h$d = t_ph$2 + c_h;
         rnorm$address = n2_q$q;
         rn$d = rnorm$data;
         dot_l = pair_l$q + third_l$q;
@@ -11033,27 +11137,38 @@ module top$pipeline$shade$1$lighting$u_l(clock,a,b,p);
        p <= 'h0;
     end
 endmodule // top$pipeline$shade$1$lighting$u_l
-module top$pipeline$shade$1$lit_b(clock,a,b,y);
+module top$pipeline$shade$1$lit_b(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$1$lit_b$p p(
@@ -11062,29 +11177,63 @@ module top$pipeline$shade$1$lit_b(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$1$lit_b$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$1$lit_b$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$1$lit_b$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$1$lit_b
+module top$pipeline$shade$1$lit_b$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_b$c_q
 module top$pipeline$shade$1$lit_b$p(clock,a,b,p);
     
     // Module arguments
@@ -11123,13 +11272,13 @@ endmodule // top$pipeline$shade$1$lit_b$p
 module top$pipeline$shade$1$lit_b$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -11137,27 +11286,55 @@ module top$pipeline$shade$1$lit_b$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$lit_b$t
-module top$pipeline$shade$1$lit_g(clock,a,b,y);
+module top$pipeline$shade$1$lit_b$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_b$t_c
+module top$pipeline$shade$1$lit_g(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$1$lit_g$p p(
@@ -11166,29 +11343,63 @@ module top$pipeline$shade$1$lit_g(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$1$lit_g$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$1$lit_g$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$1$lit_g$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$1$lit_g
+module top$pipeline$shade$1$lit_g$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_g$c_q
 module top$pipeline$shade$1$lit_g$p(clock,a,b,p);
     
     // Module arguments
@@ -11227,13 +11438,13 @@ endmodule // top$pipeline$shade$1$lit_g$p
 module top$pipeline$shade$1$lit_g$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -11241,27 +11452,55 @@ module top$pipeline$shade$1$lit_g$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$lit_g$t
-module top$pipeline$shade$1$lit_r(clock,a,b,y);
+module top$pipeline$shade$1$lit_g$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_g$t_c
+module top$pipeline$shade$1$lit_r(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$pipeline$shade$1$lit_r$p p(
@@ -11270,29 +11509,63 @@ module top$pipeline$shade$1$lit_r(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$pipeline$shade$1$lit_r$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$pipeline$shade$1$lit_r$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$pipeline$shade$1$lit_r$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$pipeline$shade$1$lit_r
+module top$pipeline$shade$1$lit_r$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_r$c_q
 module top$pipeline$shade$1$lit_r$p(clock,a,b,p);
     
     // Module arguments
@@ -11331,13 +11604,13 @@ endmodule // top$pipeline$shade$1$lit_r$p
 module top$pipeline$shade$1$lit_r$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -11345,6 +11618,23 @@ module top$pipeline$shade$1$lit_r$t(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$lit_r$t
+module top$pipeline$shade$1$lit_r$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$pipeline$shade$1$lit_r$t_c
 module top$pipeline$shade$1$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -13005,40 +13295,6 @@ module top$pipeline$shade$1$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$pipeline$shade$1$shaded_q$2
-module top$pipeline$shade$1$specular_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$1$specular_q
-module top$pipeline$shade$1$specular_qq(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$pipeline$shade$1$specular_qq
 module top$pipeline$shade$1$valid_q$0(d,q,clock);
     
     // Module arguments

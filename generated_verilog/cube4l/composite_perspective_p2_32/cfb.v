@@ -1174,8 +1174,8 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [31:0] dx_abs;
-    reg  [31:0] dy_abs;
+    reg  [15:0] dx_abs;
+    reg  [15:0] dy_abs;
     reg  dxn;
     reg  [15:0] dxm;
     reg  dyn_;
@@ -1666,20 +1666,20 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = view_dx$q[('h0)+:(32)];
+        dx_abs = view_dx$q[('h0)+:(16)];
         if (view_dx$q['h20]) begin
-            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
+            dx_abs = 'h0 - view_dx$q[('h0)+:(16)];
         end
-        dy_abs = view_dy$q[('h0)+:(32)];
+        dy_abs = view_dy$q[('h0)+:(16)];
         if (view_dy$q['h20]) begin
-            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
+            dy_abs = 'h0 - view_dy$q[('h0)+:(16)];
         end
-        par_dxm$d = 16'(dx_abs);
-        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
-        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
-        par_dym$d = 16'(dy_abs);
-        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
-        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
+        par_dxm$d = dx_abs;
+        par_dxn$d = view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs;
+        par_dyn$d = view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -3270,8 +3270,8 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [31:0] dx_abs;
-    reg  [31:0] dy_abs;
+    reg  [15:0] dx_abs;
+    reg  [15:0] dy_abs;
     reg  dxn;
     reg  [15:0] dxm;
     reg  dyn_;
@@ -3762,20 +3762,20 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = view_dx$q[('h0)+:(32)];
+        dx_abs = view_dx$q[('h0)+:(16)];
         if (view_dx$q['h20]) begin
-            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
+            dx_abs = 'h0 - view_dx$q[('h0)+:(16)];
         end
-        dy_abs = view_dy$q[('h0)+:(32)];
+        dy_abs = view_dy$q[('h0)+:(16)];
         if (view_dy$q['h20]) begin
-            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
+            dy_abs = 'h0 - view_dy$q[('h0)+:(16)];
         end
-        par_dxm$d = 16'(dx_abs);
-        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
-        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
-        par_dym$d = 16'(dy_abs);
-        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
-        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
+        par_dxm$d = dx_abs;
+        par_dxn$d = view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs;
+        par_dyn$d = view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);

@@ -280,23 +280,20 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$16$d;
     wire  valid_q$16$q;
     reg  valid_q$16$clock;
-    reg  [15:0] specular_q$d;
-    wire  [15:0] specular_q$q;
-    reg  specular_q$clock;
-    reg  [15:0] specular_qq$d;
-    wire  [15:0] specular_qq$q;
-    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
+    reg  [15:0] lit_r$c;
     wire  [15:0] lit_r$y;
     reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
+    reg  [15:0] lit_g$c;
     wire  [15:0] lit_g$y;
     reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
+    reg  [15:0] lit_b$c;
     wire  [15:0] lit_b$y;
     reg  [15:0] shaded_q$0$d;
     wire  [15:0] shaded_q$0$q;
@@ -341,9 +338,6 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] alpha;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
-    reg  [31:0] sum_r;
-    reg  [31:0] sum_g;
-    reg  [31:0] sum_b;
     
     // Sub module instances
     top$lanes$0$shader$lut lut(
@@ -694,32 +688,25 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$16$q),
         .clock(valid_q$16$clock)
     );
-    top$lanes$0$shader$specular_q specular_q(
-        .d(specular_q$d),
-        .q(specular_q$q),
-        .clock(specular_q$clock)
-    );
-    top$lanes$0$shader$specular_qq specular_qq(
-        .d(specular_qq$d),
-        .q(specular_qq$q),
-        .clock(specular_qq$clock)
-    );
     top$lanes$0$shader$lit_r lit_r(
         .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
+        .c(lit_r$c),
         .y(lit_r$y)
     );
     top$lanes$0$shader$lit_g lit_g(
         .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
+        .c(lit_g$c),
         .y(lit_g$y)
     );
     top$lanes$0$shader$lit_b lit_b(
         .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
+        .c(lit_b$c),
         .y(lit_b$y)
     );
     top$lanes$0$shader$shaded_q$0 shaded_q$0(
@@ -783,14 +770,10 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
-        specular_q$clock = clock;
-        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        specular_q$d = specular_q$q;
-        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -995,32 +978,21 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        specular_q$d = specular;
-        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
+        lit_r$c = specular;
+        lit_g$c = specular;
+        lit_b$c = specular;
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
-        shaded_q$0$d = 16'(sum_r);
-        if (sum_r > 32'(m_max)) begin
-            shaded_q$0$d = m_max;
-        end
-        shaded_q$1$d = 16'(sum_g);
-        if (sum_g > 32'(m_max)) begin
-            shaded_q$1$d = m_max;
-        end
-        shaded_q$2$d = 16'(sum_b);
-        if (sum_b > 32'(m_max)) begin
-            shaded_q$2$d = m_max;
-        end
+        shaded_q$0$d = lit_r$y;
+        shaded_q$1$d = lit_g$y;
+        shaded_q$2$d = lit_b$y;
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
@@ -1388,27 +1360,38 @@ module top$lanes$0$shader$gate_q$4(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$gate_q$4
-module top$lanes$0$shader$lit_b(clock,a,b,y);
+module top$lanes$0$shader$lit_b(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$lanes$0$shader$lit_b$p p(
@@ -1417,29 +1400,63 @@ module top$lanes$0$shader$lit_b(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$lanes$0$shader$lit_b$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$lanes$0$shader$lit_b$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$lanes$0$shader$lit_b$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$lanes$0$shader$lit_b
+module top$lanes$0$shader$lit_b$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_b$c_q
 module top$lanes$0$shader$lit_b$p(clock,a,b,p);
     
     // Module arguments
@@ -1478,13 +1495,13 @@ endmodule // top$lanes$0$shader$lit_b$p
 module top$lanes$0$shader$lit_b$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -1492,27 +1509,55 @@ module top$lanes$0$shader$lit_b$t(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$lit_b$t
-module top$lanes$0$shader$lit_g(clock,a,b,y);
+module top$lanes$0$shader$lit_b$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_b$t_c
+module top$lanes$0$shader$lit_g(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$lanes$0$shader$lit_g$p p(
@@ -1521,29 +1566,63 @@ module top$lanes$0$shader$lit_g(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$lanes$0$shader$lit_g$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$lanes$0$shader$lit_g$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$lanes$0$shader$lit_g$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$lanes$0$shader$lit_g
+module top$lanes$0$shader$lit_g$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_g$c_q
 module top$lanes$0$shader$lit_g$p(clock,a,b,p);
     
     // Module arguments
@@ -1582,13 +1661,13 @@ endmodule // top$lanes$0$shader$lit_g$p
 module top$lanes$0$shader$lit_g$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -1596,27 +1675,55 @@ module top$lanes$0$shader$lit_g$t(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$lit_g$t
-module top$lanes$0$shader$lit_r(clock,a,b,y);
+module top$lanes$0$shader$lit_g$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_g$t_c
+module top$lanes$0$shader$lit_r(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$lanes$0$shader$lit_r$p p(
@@ -1625,29 +1732,63 @@ module top$lanes$0$shader$lit_r(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$lanes$0$shader$lit_r$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$lanes$0$shader$lit_r$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$lanes$0$shader$lit_r$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$lanes$0$shader$lit_r
+module top$lanes$0$shader$lit_r$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_r$c_q
 module top$lanes$0$shader$lit_r$p(clock,a,b,p);
     
     // Module arguments
@@ -1686,13 +1827,13 @@ endmodule // top$lanes$0$shader$lit_r$p
 module top$lanes$0$shader$lit_r$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -1700,6 +1841,23 @@ module top$lanes$0$shader$lit_r$t(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$lit_r$t
+module top$lanes$0$shader$lit_r$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$0$shader$lit_r$t_c
 module top$lanes$0$shader$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -2473,40 +2631,6 @@ module top$lanes$0$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$shaded_q$2
-module top$lanes$0$shader$specular_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$shader$specular_q
-module top$lanes$0$shader$specular_qq(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$shader$specular_qq
 module top$lanes$0$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -3350,23 +3474,20 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$16$d;
     wire  valid_q$16$q;
     reg  valid_q$16$clock;
-    reg  [15:0] specular_q$d;
-    wire  [15:0] specular_q$q;
-    reg  specular_q$clock;
-    reg  [15:0] specular_qq$d;
-    wire  [15:0] specular_qq$q;
-    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
+    reg  [15:0] lit_r$c;
     wire  [15:0] lit_r$y;
     reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
+    reg  [15:0] lit_g$c;
     wire  [15:0] lit_g$y;
     reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
+    reg  [15:0] lit_b$c;
     wire  [15:0] lit_b$y;
     reg  [15:0] shaded_q$0$d;
     wire  [15:0] shaded_q$0$q;
@@ -3411,9 +3532,6 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] alpha;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
-    reg  [31:0] sum_r;
-    reg  [31:0] sum_g;
-    reg  [31:0] sum_b;
     
     // Sub module instances
     top$lanes$1$shader$lut lut(
@@ -3764,32 +3882,25 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$16$q),
         .clock(valid_q$16$clock)
     );
-    top$lanes$1$shader$specular_q specular_q(
-        .d(specular_q$d),
-        .q(specular_q$q),
-        .clock(specular_q$clock)
-    );
-    top$lanes$1$shader$specular_qq specular_qq(
-        .d(specular_qq$d),
-        .q(specular_qq$q),
-        .clock(specular_qq$clock)
-    );
     top$lanes$1$shader$lit_r lit_r(
         .clock(lit_r$clock),
         .a(lit_r$a),
         .b(lit_r$b),
+        .c(lit_r$c),
         .y(lit_r$y)
     );
     top$lanes$1$shader$lit_g lit_g(
         .clock(lit_g$clock),
         .a(lit_g$a),
         .b(lit_g$b),
+        .c(lit_g$c),
         .y(lit_g$y)
     );
     top$lanes$1$shader$lit_b lit_b(
         .clock(lit_b$clock),
         .a(lit_b$a),
         .b(lit_b$b),
+        .c(lit_b$c),
         .y(lit_b$y)
     );
     top$lanes$1$shader$shaded_q$0 shaded_q$0(
@@ -3853,14 +3964,10 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
-        specular_q$clock = clock;
-        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        specular_q$d = specular_q$q;
-        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -4065,32 +4172,21 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        specular_q$d = specular;
-        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
+        lit_r$c = specular;
+        lit_g$c = specular;
+        lit_b$c = specular;
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
-        shaded_q$0$d = 16'(sum_r);
-        if (sum_r > 32'(m_max)) begin
-            shaded_q$0$d = m_max;
-        end
-        shaded_q$1$d = 16'(sum_g);
-        if (sum_g > 32'(m_max)) begin
-            shaded_q$1$d = m_max;
-        end
-        shaded_q$2$d = 16'(sum_b);
-        if (sum_b > 32'(m_max)) begin
-            shaded_q$2$d = m_max;
-        end
+        shaded_q$0$d = lit_r$y;
+        shaded_q$1$d = lit_g$y;
+        shaded_q$2$d = lit_b$y;
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
@@ -4458,27 +4554,38 @@ module top$lanes$1$shader$gate_q$4(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$gate_q$4
-module top$lanes$1$shader$lit_b(clock,a,b,y);
+module top$lanes$1$shader$lit_b(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$lanes$1$shader$lit_b$p p(
@@ -4487,29 +4594,63 @@ module top$lanes$1$shader$lit_b(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$lanes$1$shader$lit_b$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$lanes$1$shader$lit_b$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$lanes$1$shader$lit_b$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$lanes$1$shader$lit_b
+module top$lanes$1$shader$lit_b$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_b$c_q
 module top$lanes$1$shader$lit_b$p(clock,a,b,p);
     
     // Module arguments
@@ -4548,13 +4689,13 @@ endmodule // top$lanes$1$shader$lit_b$p
 module top$lanes$1$shader$lit_b$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -4562,27 +4703,55 @@ module top$lanes$1$shader$lit_b$t(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$lit_b$t
-module top$lanes$1$shader$lit_g(clock,a,b,y);
+module top$lanes$1$shader$lit_b$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_b$t_c
+module top$lanes$1$shader$lit_g(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$lanes$1$shader$lit_g$p p(
@@ -4591,29 +4760,63 @@ module top$lanes$1$shader$lit_g(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$lanes$1$shader$lit_g$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$lanes$1$shader$lit_g$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$lanes$1$shader$lit_g$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$lanes$1$shader$lit_g
+module top$lanes$1$shader$lit_g$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_g$c_q
 module top$lanes$1$shader$lit_g$p(clock,a,b,p);
     
     // Module arguments
@@ -4652,13 +4855,13 @@ endmodule // top$lanes$1$shader$lit_g$p
 module top$lanes$1$shader$lit_g$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -4666,27 +4869,55 @@ module top$lanes$1$shader$lit_g$t(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$lit_g$t
-module top$lanes$1$shader$lit_r(clock,a,b,y);
+module top$lanes$1$shader$lit_g$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_g$t_c
+module top$lanes$1$shader$lit_r(clock,a,b,c,y);
     
     // Module arguments
     input wire  clock;
     input wire  [15:0] a;
     input wire  [15:0] b;
+    input wire  [15:0] c;
     output reg  [15:0] y;
     
     // Constant declarations
-    localparam  half = 'h80;
+    localparam  half = 48'h80;
     localparam  shift = 8'h8;
-    localparam  enabled = 1'b1;
+    localparam  shift2 = 8'h10;
+    localparam  max = 16'hff;
     
     // Stub signals
     reg  p$clock;
     reg  [15:0] p$a;
     reg  [15:0] p$b;
     wire  [31:0] p$p;
-    reg  [31:0] t$d;
-    wire  [31:0] t$q;
+    reg  [15:0] c_q$d;
+    wire  [15:0] c_q$q;
+    reg  c_q$clock;
+    reg  [47:0] t$d;
+    wire  [47:0] t$q;
     reg  t$clock;
+    reg  [47:0] t_c$d;
+    wire  [47:0] t_c$q;
+    reg  t_c$clock;
+    
+    // Local signals
+    reg  [47:0] u;
     
     // Sub module instances
     top$lanes$1$shader$lit_r$p p(
@@ -4695,29 +4926,63 @@ module top$lanes$1$shader$lit_r(clock,a,b,y);
         .b(p$b),
         .p(p$p)
     );
+    top$lanes$1$shader$lit_r$c_q c_q(
+        .d(c_q$d),
+        .q(c_q$q),
+        .clock(c_q$clock)
+    );
     top$lanes$1$shader$lit_r$t t(
         .d(t$d),
         .q(t$q),
         .clock(t$clock)
     );
+    top$lanes$1$shader$lit_r$t_c t_c(
+        .d(t_c$d),
+        .q(t_c$q),
+        .clock(t_c$clock)
+    );
     
     // Update code
     reg  [15:0] y_pass;
     always @(*) begin
+        c_q$clock = clock;
         t$clock = clock;
+        t_c$clock = clock;
+        c_q$d = c_q$q;
         t$d = t$q;
+        t_c$d = t_c$q;
         p$clock = clock;
         p$a = a;
         p$b = b;
-        t$d = p$p + half;
-        y_pass = 16'((t$q + (t$q >> shift)) >> shift);
-        if (~enabled) begin
-            y_pass = 'h0;
+        c_q$d = c;
+        t$d = 48'(p$p) + half;
+        t_c$d = 48'(p$p) + ((48'(c_q$q) << shift) | half);
+        u = t_c$q + (t$q >> shift);
+        y_pass = 16'(u >> shift);
+        if ((u >> shift2) != 'h0) begin
+            y_pass = max;
         end
         y = y_pass;
     end
     
 endmodule // top$lanes$1$shader$lit_r
+module top$lanes$1$shader$lit_r$c_q(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_r$c_q
 module top$lanes$1$shader$lit_r$p(clock,a,b,p);
     
     // Module arguments
@@ -4756,13 +5021,13 @@ endmodule // top$lanes$1$shader$lit_r$p
 module top$lanes$1$shader$lit_r$t(d,q,clock);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  [47:0] d;
+    output reg  [47:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 'h0;
+       q = 48'h0;
     end
     
     always @(posedge clock) begin
@@ -4770,6 +5035,23 @@ module top$lanes$1$shader$lit_r$t(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$lit_r$t
+module top$lanes$1$shader$lit_r$t_c(d,q,clock);
+    
+    // Module arguments
+    input wire  [47:0] d;
+    output reg  [47:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 48'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // top$lanes$1$shader$lit_r$t_c
 module top$lanes$1$shader$lut(clock,host_write,host_address,host_data,address,data);
     
     // Module arguments
@@ -5543,40 +5825,6 @@ module top$lanes$1$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$shaded_q$2
-module top$lanes$1$shader$specular_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$shader$specular_q
-module top$lanes$1$shader$specular_qq(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$shader$specular_qq
 module top$lanes$1$shader$valid_q$0(d,q,clock);
     
     // Module arguments

@@ -1475,8 +1475,8 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [31:0] dx_abs;
-    reg  [31:0] dy_abs;
+    reg  [15:0] dx_abs;
+    reg  [15:0] dy_abs;
     reg  dxn;
     reg  [15:0] dxm;
     reg  dyn_;
@@ -1951,20 +1951,20 @@ module top$cfb$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = view_dx$q[('h0)+:(32)];
+        dx_abs = view_dx$q[('h0)+:(16)];
         if (view_dx$q['h20]) begin
-            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
+            dx_abs = 'h0 - view_dx$q[('h0)+:(16)];
         end
-        dy_abs = view_dy$q[('h0)+:(32)];
+        dy_abs = view_dy$q[('h0)+:(16)];
         if (view_dy$q['h20]) begin
-            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
+            dy_abs = 'h0 - view_dy$q[('h0)+:(16)];
         end
-        par_dxm$d = 16'(dx_abs);
-        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
-        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
-        par_dym$d = 16'(dy_abs);
-        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
-        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
+        par_dxm$d = dx_abs;
+        par_dxn$d = view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs;
+        par_dyn$d = view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -3525,8 +3525,8 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [31:0] dx_abs;
-    reg  [31:0] dy_abs;
+    reg  [15:0] dx_abs;
+    reg  [15:0] dy_abs;
     reg  dxn;
     reg  [15:0] dxm;
     reg  dyn_;
@@ -4001,20 +4001,20 @@ module top$cfb$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = view_dx$q[('h0)+:(32)];
+        dx_abs = view_dx$q[('h0)+:(16)];
         if (view_dx$q['h20]) begin
-            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
+            dx_abs = 'h0 - view_dx$q[('h0)+:(16)];
         end
-        dy_abs = view_dy$q[('h0)+:(32)];
+        dy_abs = view_dy$q[('h0)+:(16)];
         if (view_dy$q['h20]) begin
-            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
+            dy_abs = 'h0 - view_dy$q[('h0)+:(16)];
         end
-        par_dxm$d = 16'(dx_abs);
-        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
-        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
-        par_dym$d = 16'(dy_abs);
-        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
-        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
+        par_dxm$d = dx_abs;
+        par_dxn$d = view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs;
+        par_dyn$d = view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -5575,8 +5575,8 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [31:0] dx_abs;
-    reg  [31:0] dy_abs;
+    reg  [15:0] dx_abs;
+    reg  [15:0] dy_abs;
     reg  dxn;
     reg  [15:0] dxm;
     reg  dyn_;
@@ -6051,20 +6051,20 @@ module top$cfb$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = view_dx$q[('h0)+:(32)];
+        dx_abs = view_dx$q[('h0)+:(16)];
         if (view_dx$q['h20]) begin
-            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
+            dx_abs = 'h0 - view_dx$q[('h0)+:(16)];
         end
-        dy_abs = view_dy$q[('h0)+:(32)];
+        dy_abs = view_dy$q[('h0)+:(16)];
         if (view_dy$q['h20]) begin
-            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
+            dy_abs = 'h0 - view_dy$q[('h0)+:(16)];
         end
-        par_dxm$d = 16'(dx_abs);
-        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
-        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
-        par_dym$d = 16'(dy_abs);
-        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
-        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
+        par_dxm$d = dx_abs;
+        par_dxn$d = view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs;
+        par_dyn$d = view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -7625,8 +7625,8 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [31:0] dx_abs;
-    reg  [31:0] dy_abs;
+    reg  [15:0] dx_abs;
+    reg  [15:0] dy_abs;
     reg  dxn;
     reg  [15:0] dxm;
     reg  dyn_;
@@ -8101,20 +8101,20 @@ module top$cfb$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye_
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = view_dx$q[('h0)+:(32)];
+        dx_abs = view_dx$q[('h0)+:(16)];
         if (view_dx$q['h20]) begin
-            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
+            dx_abs = 'h0 - view_dx$q[('h0)+:(16)];
         end
-        dy_abs = view_dy$q[('h0)+:(32)];
+        dy_abs = view_dy$q[('h0)+:(16)];
         if (view_dy$q['h20]) begin
-            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
+            dy_abs = 'h0 - view_dy$q[('h0)+:(16)];
         end
-        par_dxm$d = 16'(dx_abs);
-        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
-        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
-        par_dym$d = 16'(dy_abs);
-        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
-        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
+        par_dxm$d = dx_abs;
+        par_dxn$d = view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs;
+        par_dyn$d = view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -11493,8 +11493,8 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [31:0] dx_abs;
-    reg  [31:0] dy_abs;
+    reg  [15:0] dx_abs;
+    reg  [15:0] dy_abs;
     reg  dxn;
     reg  [15:0] dxm;
     reg  dyn_;
@@ -11969,20 +11969,20 @@ module top$late$lanes$0(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = view_dx$q[('h0)+:(32)];
+        dx_abs = view_dx$q[('h0)+:(16)];
         if (view_dx$q['h20]) begin
-            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
+            dx_abs = 'h0 - view_dx$q[('h0)+:(16)];
         end
-        dy_abs = view_dy$q[('h0)+:(32)];
+        dy_abs = view_dy$q[('h0)+:(16)];
         if (view_dy$q['h20]) begin
-            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
+            dy_abs = 'h0 - view_dy$q[('h0)+:(16)];
         end
-        par_dxm$d = 16'(dx_abs);
-        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
-        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
-        par_dym$d = 16'(dy_abs);
-        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
-        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
+        par_dxm$d = dx_abs;
+        par_dxn$d = view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs;
+        par_dyn$d = view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -13543,8 +13543,8 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [31:0] dx_abs;
-    reg  [31:0] dy_abs;
+    reg  [15:0] dx_abs;
+    reg  [15:0] dy_abs;
     reg  dxn;
     reg  [15:0] dxm;
     reg  dyn_;
@@ -14019,20 +14019,20 @@ module top$late$lanes$1(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = view_dx$q[('h0)+:(32)];
+        dx_abs = view_dx$q[('h0)+:(16)];
         if (view_dx$q['h20]) begin
-            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
+            dx_abs = 'h0 - view_dx$q[('h0)+:(16)];
         end
-        dy_abs = view_dy$q[('h0)+:(32)];
+        dy_abs = view_dy$q[('h0)+:(16)];
         if (view_dy$q['h20]) begin
-            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
+            dy_abs = 'h0 - view_dy$q[('h0)+:(16)];
         end
-        par_dxm$d = 16'(dx_abs);
-        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
-        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
-        par_dym$d = 16'(dy_abs);
-        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
-        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
+        par_dxm$d = dx_abs;
+        par_dxn$d = view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs;
+        par_dyn$d = view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -15593,8 +15593,8 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [31:0] dx_abs;
-    reg  [31:0] dy_abs;
+    reg  [15:0] dx_abs;
+    reg  [15:0] dy_abs;
     reg  dxn;
     reg  [15:0] dxm;
     reg  dyn_;
@@ -16069,20 +16069,20 @@ module top$late$lanes$2(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = view_dx$q[('h0)+:(32)];
+        dx_abs = view_dx$q[('h0)+:(16)];
         if (view_dx$q['h20]) begin
-            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
+            dx_abs = 'h0 - view_dx$q[('h0)+:(16)];
         end
-        dy_abs = view_dy$q[('h0)+:(32)];
+        dy_abs = view_dy$q[('h0)+:(16)];
         if (view_dy$q['h20]) begin
-            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
+            dy_abs = 'h0 - view_dy$q[('h0)+:(16)];
         end
-        par_dxm$d = 16'(dx_abs);
-        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
-        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
-        par_dym$d = 16'(dy_abs);
-        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
-        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
+        par_dxm$d = dx_abs;
+        par_dxn$d = view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs;
+        par_dyn$d = view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);
@@ -17643,8 +17643,8 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
     reg  [1:0] u_from;
     reg  [1:0] v_from;
     reg  [1:0] w_from;
-    reg  [31:0] dx_abs;
-    reg  [31:0] dy_abs;
+    reg  [15:0] dx_abs;
+    reg  [15:0] dy_abs;
     reg  dxn;
     reg  [15:0] dxm;
     reg  dyn_;
@@ -18119,20 +18119,20 @@ module top$late$lanes$3(clock,dims,slices,axes,address_reg,dx,dy,eye_x,eye_y,eye
         b_u$d = address_reg[('h0)+:(16)];
         slab_lo$d = address_reg[('h10)+:(16)];
         slab_hi$d = address_reg[('h20)+:(16)];
-        dx_abs = view_dx$q[('h0)+:(32)];
+        dx_abs = view_dx$q[('h0)+:(16)];
         if (view_dx$q['h20]) begin
-            dx_abs = 'h0 - view_dx$q[('h0)+:(32)];
+            dx_abs = 'h0 - view_dx$q[('h0)+:(16)];
         end
-        dy_abs = view_dy$q[('h0)+:(32)];
+        dy_abs = view_dy$q[('h0)+:(16)];
         if (view_dy$q['h20]) begin
-            dy_abs = 'h0 - view_dy$q[('h0)+:(32)];
+            dy_abs = 'h0 - view_dy$q[('h0)+:(16)];
         end
-        par_dxm$d = 16'(dx_abs);
-        par_dxn$d = view_dx$q['h20] & (dx_abs != 'h0);
-        par_dx_pos$d = ~view_dx$q['h20] & (dx_abs != 'h0);
-        par_dym$d = 16'(dy_abs);
-        par_dyn$d = view_dy$q['h20] & (dy_abs != 'h0);
-        par_dy_pos$d = ~view_dy$q['h20] & (dy_abs != 'h0);
+        par_dxm$d = dx_abs;
+        par_dxn$d = view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dx_pos$d = ~view_dx$q['h20] & (view_dx$q[('h0)+:(32)] != 'h0);
+        par_dym$d = dy_abs;
+        par_dyn$d = view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
+        par_dy_pos$d = ~view_dy$q['h20] & (view_dy$q[('h0)+:(32)] != 'h0);
         memory$read_clock = clock;
         memory$write_clock = clock;
         memory$write_enable = load_enable & (16'(load_module) == lane);

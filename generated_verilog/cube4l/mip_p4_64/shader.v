@@ -280,23 +280,20 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$16$d;
     wire  valid_q$16$q;
     reg  valid_q$16$clock;
-    reg  [15:0] specular_q$d;
-    wire  [15:0] specular_q$q;
-    reg  specular_q$clock;
-    reg  [15:0] specular_qq$d;
-    wire  [15:0] specular_qq$q;
-    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
+    reg  [15:0] lit_r$c;
     wire  [15:0] lit_r$y = 'h0;
     reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
+    reg  [15:0] lit_g$c;
     wire  [15:0] lit_g$y = 'h0;
     reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
+    reg  [15:0] lit_b$c;
     wire  [15:0] lit_b$y = 'h0;
     reg  [15:0] shaded_q$0$d;
     wire  [15:0] shaded_q$0$q;
@@ -341,9 +338,6 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] alpha;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
-    reg  [31:0] sum_r;
-    reg  [31:0] sum_g;
-    reg  [31:0] sum_b;
     
     // Sub module instances
     top$lanes$0$shader$neg_in$0 neg_in$0(
@@ -686,16 +680,6 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$16$q),
         .clock(valid_q$16$clock)
     );
-    top$lanes$0$shader$specular_q specular_q(
-        .d(specular_q$d),
-        .q(specular_q$q),
-        .clock(specular_q$clock)
-    );
-    top$lanes$0$shader$specular_qq specular_qq(
-        .d(specular_qq$d),
-        .q(specular_qq$q),
-        .clock(specular_qq$clock)
-    );
     top$lanes$0$shader$shaded_q$0 shaded_q$0(
         .d(shaded_q$0$d),
         .q(shaded_q$0$q),
@@ -739,14 +723,10 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
-        specular_q$clock = clock;
-        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        specular_q$d = specular_q$q;
-        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -951,32 +931,21 @@ module top$lanes$0$shader(clock,host_write,host_address,host_data,value,invalid,
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        specular_q$d = specular;
-        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
+        lit_r$c = specular;
+        lit_g$c = specular;
+        lit_b$c = specular;
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
-        shaded_q$0$d = 16'(sum_r);
-        if (sum_r > 32'(m_max)) begin
-            shaded_q$0$d = m_max;
-        end
-        shaded_q$1$d = 16'(sum_g);
-        if (sum_g > 32'(m_max)) begin
-            shaded_q$1$d = m_max;
-        end
-        shaded_q$2$d = 16'(sum_b);
-        if (sum_b > 32'(m_max)) begin
-            shaded_q$2$d = m_max;
-        end
+        shaded_q$0$d = lit_r$y;
+        shaded_q$1$d = lit_g$y;
+        shaded_q$2$d = lit_b$y;
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
@@ -1735,40 +1704,6 @@ module top$lanes$0$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$0$shader$shaded_q$2
-module top$lanes$0$shader$specular_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$shader$specular_q
-module top$lanes$0$shader$specular_qq(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$0$shader$specular_qq
 module top$lanes$0$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -2612,23 +2547,20 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$16$d;
     wire  valid_q$16$q;
     reg  valid_q$16$clock;
-    reg  [15:0] specular_q$d;
-    wire  [15:0] specular_q$q;
-    reg  specular_q$clock;
-    reg  [15:0] specular_qq$d;
-    wire  [15:0] specular_qq$q;
-    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
+    reg  [15:0] lit_r$c;
     wire  [15:0] lit_r$y = 'h0;
     reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
+    reg  [15:0] lit_g$c;
     wire  [15:0] lit_g$y = 'h0;
     reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
+    reg  [15:0] lit_b$c;
     wire  [15:0] lit_b$y = 'h0;
     reg  [15:0] shaded_q$0$d;
     wire  [15:0] shaded_q$0$q;
@@ -2673,9 +2605,6 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] alpha;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
-    reg  [31:0] sum_r;
-    reg  [31:0] sum_g;
-    reg  [31:0] sum_b;
     
     // Sub module instances
     top$lanes$1$shader$neg_in$0 neg_in$0(
@@ -3018,16 +2947,6 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$16$q),
         .clock(valid_q$16$clock)
     );
-    top$lanes$1$shader$specular_q specular_q(
-        .d(specular_q$d),
-        .q(specular_q$q),
-        .clock(specular_q$clock)
-    );
-    top$lanes$1$shader$specular_qq specular_qq(
-        .d(specular_qq$d),
-        .q(specular_qq$q),
-        .clock(specular_qq$clock)
-    );
     top$lanes$1$shader$shaded_q$0 shaded_q$0(
         .d(shaded_q$0$d),
         .q(shaded_q$0$q),
@@ -3071,14 +2990,10 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
-        specular_q$clock = clock;
-        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        specular_q$d = specular_q$q;
-        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -3283,32 +3198,21 @@ module top$lanes$1$shader(clock,host_write,host_address,host_data,value,invalid,
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        specular_q$d = specular;
-        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
+        lit_r$c = specular;
+        lit_g$c = specular;
+        lit_b$c = specular;
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
-        shaded_q$0$d = 16'(sum_r);
-        if (sum_r > 32'(m_max)) begin
-            shaded_q$0$d = m_max;
-        end
-        shaded_q$1$d = 16'(sum_g);
-        if (sum_g > 32'(m_max)) begin
-            shaded_q$1$d = m_max;
-        end
-        shaded_q$2$d = 16'(sum_b);
-        if (sum_b > 32'(m_max)) begin
-            shaded_q$2$d = m_max;
-        end
+        shaded_q$0$d = lit_r$y;
+        shaded_q$1$d = lit_g$y;
+        shaded_q$2$d = lit_b$y;
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
@@ -4067,40 +3971,6 @@ module top$lanes$1$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$1$shader$shaded_q$2
-module top$lanes$1$shader$specular_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$shader$specular_q
-module top$lanes$1$shader$specular_qq(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$1$shader$specular_qq
 module top$lanes$1$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -4944,23 +4814,20 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$16$d;
     wire  valid_q$16$q;
     reg  valid_q$16$clock;
-    reg  [15:0] specular_q$d;
-    wire  [15:0] specular_q$q;
-    reg  specular_q$clock;
-    reg  [15:0] specular_qq$d;
-    wire  [15:0] specular_qq$q;
-    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
+    reg  [15:0] lit_r$c;
     wire  [15:0] lit_r$y = 'h0;
     reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
+    reg  [15:0] lit_g$c;
     wire  [15:0] lit_g$y = 'h0;
     reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
+    reg  [15:0] lit_b$c;
     wire  [15:0] lit_b$y = 'h0;
     reg  [15:0] shaded_q$0$d;
     wire  [15:0] shaded_q$0$q;
@@ -5005,9 +4872,6 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] alpha;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
-    reg  [31:0] sum_r;
-    reg  [31:0] sum_g;
-    reg  [31:0] sum_b;
     
     // Sub module instances
     top$lanes$2$shader$neg_in$0 neg_in$0(
@@ -5350,16 +5214,6 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$16$q),
         .clock(valid_q$16$clock)
     );
-    top$lanes$2$shader$specular_q specular_q(
-        .d(specular_q$d),
-        .q(specular_q$q),
-        .clock(specular_q$clock)
-    );
-    top$lanes$2$shader$specular_qq specular_qq(
-        .d(specular_qq$d),
-        .q(specular_qq$q),
-        .clock(specular_qq$clock)
-    );
     top$lanes$2$shader$shaded_q$0 shaded_q$0(
         .d(shaded_q$0$d),
         .q(shaded_q$0$q),
@@ -5403,14 +5257,10 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
-        specular_q$clock = clock;
-        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        specular_q$d = specular_q$q;
-        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -5615,32 +5465,21 @@ module top$lanes$2$shader(clock,host_write,host_address,host_data,value,invalid,
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        specular_q$d = specular;
-        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
+        lit_r$c = specular;
+        lit_g$c = specular;
+        lit_b$c = specular;
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
-        shaded_q$0$d = 16'(sum_r);
-        if (sum_r > 32'(m_max)) begin
-            shaded_q$0$d = m_max;
-        end
-        shaded_q$1$d = 16'(sum_g);
-        if (sum_g > 32'(m_max)) begin
-            shaded_q$1$d = m_max;
-        end
-        shaded_q$2$d = 16'(sum_b);
-        if (sum_b > 32'(m_max)) begin
-            shaded_q$2$d = m_max;
-        end
+        shaded_q$0$d = lit_r$y;
+        shaded_q$1$d = lit_g$y;
+        shaded_q$2$d = lit_b$y;
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
@@ -6399,40 +6238,6 @@ module top$lanes$2$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$2$shader$shaded_q$2
-module top$lanes$2$shader$specular_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$shader$specular_q
-module top$lanes$2$shader$specular_qq(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$2$shader$specular_qq
 module top$lanes$2$shader$valid_q$0(d,q,clock);
     
     // Module arguments
@@ -7276,23 +7081,20 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  valid_q$16$d;
     wire  valid_q$16$q;
     reg  valid_q$16$clock;
-    reg  [15:0] specular_q$d;
-    wire  [15:0] specular_q$q;
-    reg  specular_q$clock;
-    reg  [15:0] specular_qq$d;
-    wire  [15:0] specular_qq$q;
-    reg  specular_qq$clock;
     reg  lit_r$clock;
     reg  [15:0] lit_r$a;
     reg  [15:0] lit_r$b;
+    reg  [15:0] lit_r$c;
     wire  [15:0] lit_r$y = 'h0;
     reg  lit_g$clock;
     reg  [15:0] lit_g$a;
     reg  [15:0] lit_g$b;
+    reg  [15:0] lit_g$c;
     wire  [15:0] lit_g$y = 'h0;
     reg  lit_b$clock;
     reg  [15:0] lit_b$a;
     reg  [15:0] lit_b$b;
+    reg  [15:0] lit_b$c;
     wire  [15:0] lit_b$y = 'h0;
     reg  [15:0] shaded_q$0$d;
     wire  [15:0] shaded_q$0$q;
@@ -7337,9 +7139,6 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] alpha;
     reg  [15:0] diffuse;
     reg  [15:0] specular;
-    reg  [31:0] sum_r;
-    reg  [31:0] sum_g;
-    reg  [31:0] sum_b;
     
     // Sub module instances
     top$lanes$3$shader$neg_in$0 neg_in$0(
@@ -7682,16 +7481,6 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
         .q(valid_q$16$q),
         .clock(valid_q$16$clock)
     );
-    top$lanes$3$shader$specular_q specular_q(
-        .d(specular_q$d),
-        .q(specular_q$q),
-        .clock(specular_q$clock)
-    );
-    top$lanes$3$shader$specular_qq specular_qq(
-        .d(specular_qq$d),
-        .q(specular_qq$q),
-        .clock(specular_qq$clock)
-    );
     top$lanes$3$shader$shaded_q$0 shaded_q$0(
         .d(shaded_q$0$d),
         .q(shaded_q$0$q),
@@ -7735,14 +7524,10 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
     reg  [15:0] a_pass;
     reg  valid_pass;
     always @(*) begin
-        specular_q$clock = clock;
-        specular_qq$clock = clock;
         r_q$clock = clock;
         g_q$clock = clock;
         b_q$clock = clock;
         a_q$clock = clock;
-        specular_q$d = specular_q$q;
-        specular_qq$d = specular_qq$q;
         r_q$d = r_q$q;
         g_q$d = g_q$q;
         b_q$d = b_q$q;
@@ -7947,32 +7732,21 @@ module top$lanes$3$shader(clock,host_write,host_address,host_data,value,invalid,
             diffuse = lighting$diffuse;
             specular = lighting$specular;
         end
-        specular_q$d = specular;
-        specular_qq$d = specular_q$q;
         lit_r$a = 16'(lut_q$8$q);
         lit_g$a = 16'(lut_q$8$q >> 'h10);
         lit_b$a = 16'(lut_q$8$q >> 'h20);
         lit_r$b = diffuse;
         lit_g$b = diffuse;
         lit_b$b = diffuse;
-        sum_r = 32'(lit_r$y) + 32'(specular_qq$q);
-        sum_g = 32'(lit_g$y) + 32'(specular_qq$q);
-        sum_b = 32'(lit_b$y) + 32'(specular_qq$q);
+        lit_r$c = specular;
+        lit_g$c = specular;
+        lit_b$c = specular;
         shaded_q$0$clock = clock;
         shaded_q$1$clock = clock;
         shaded_q$2$clock = clock;
-        shaded_q$0$d = 16'(sum_r);
-        if (sum_r > 32'(m_max)) begin
-            shaded_q$0$d = m_max;
-        end
-        shaded_q$1$d = 16'(sum_g);
-        if (sum_g > 32'(m_max)) begin
-            shaded_q$1$d = m_max;
-        end
-        shaded_q$2$d = 16'(sum_b);
-        if (sum_b > 32'(m_max)) begin
-            shaded_q$2$d = m_max;
-        end
+        shaded_q$0$d = lit_r$y;
+        shaded_q$1$d = lit_g$y;
+        shaded_q$2$d = lit_b$y;
         mul_r$a = shaded_q$0$q;
         mul_g$a = shaded_q$1$q;
         mul_b$a = shaded_q$2$q;
@@ -8731,40 +8505,6 @@ module top$lanes$3$shader$shaded_q$2(d,q,clock);
     end
           
 endmodule // top$lanes$3$shader$shaded_q$2
-module top$lanes$3$shader$specular_q(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$shader$specular_q
-module top$lanes$3$shader$specular_qq(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // top$lanes$3$shader$specular_qq
 module top$lanes$3$shader$valid_q$0(d,q,clock);
     
     // Module arguments
