@@ -144,8 +144,8 @@ fn every_injected_fault_is_caught_by_pixels_and_by_the_trace() {
         fault(
             "dropped saturation",
             "shaded colour: red not saturated after the specular add",
-            "top$lanes$0$shader",
-            "if (sum_r > 32'(m_max)) begin",
+            "top$lanes$0$shader$lit_r",
+            "if ((u >> shift2) != 'h0) begin",
             "if (1'b0) begin",
         ),
         // The neighbour that the sign of dx selects, swapped for the other.
