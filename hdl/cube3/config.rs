@@ -30,8 +30,8 @@ pub const GROUP_BITS: usize = 18;
 pub const WRITE_LATENCY: usize = 4;
 
 /// One clock of a perspective PRP's writes: plane `plane`, stream rays
-/// `ray .. ray + x.len()` at beam positions `x` (increasing, within `P`
-/// consecutive voxels).
+/// `ray .. ray + x.len()` at beam positions `x` (increasing; those in the
+/// volume in distinct memory modules, `x mod P` distinct).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Group {
     pub plane: usize,
@@ -92,23 +92,37 @@ impl BeamFetchConfig {
                         "the stream's rays or scanlines lie outside the view's templates".into(),
                     );
                 }
-                let nk = view.dims[2];
+                let (nx, nk) = (view.dims[0] as i32, view.dims[2]);
                 c.pos_y = (0..=scanlines as i32)
                     .flat_map(|j| (0..=nk).map(move |k| (j, k)))
                     .map(|(j, k)| view.y.pos(v0 + j, k) - v0 - j)
                     .collect();
                 for k in 0..c.planes_written() {
                     let x = |r: usize| view.x.pos(u0 + r as i32, k);
+                    if let Some(r) = (1..rays).find(|&r| x(r) <= x(r - 1)) {
+                        return Err(format!(
+                            "plane {k}: rays {} and {} do not diverge",
+                            u0 + r as i32 - 1,
+                            u0 + r as i32
+                        ));
+                    }
+                    // A group is the next rays, up to P, while those whose
+                    // voxel lies in the volume keep to distinct memory
+                    // modules (x + y + k) mod P, i.e. distinct x mod P (y
+                    // and k are the group's); the others read no module.
+                    let reads = |x: i32| k < nk && (0..nx).contains(&x);
                     let mut r = 0;
                     while r < rays {
-                        let mut n = 1;
-                        while n < p && r + n < rays && x(r + n) - x(r) < p as i32 {
-                            if x(r + n) <= x(r + n - 1) {
-                                return Err(format!(
-                                    "plane {k}: rays {} and {} do not diverge",
-                                    u0 + (r + n - 1) as i32,
-                                    u0 + (r + n) as i32
-                                ));
+                        let mut used = 0u64;
+                        let mut n = 0;
+                        while n < p && r + n < rays {
+                            let xn = x(r + n);
+                            if reads(xn) {
+                                let bit = 1u64 << xn.rem_euclid(p as i32);
+                                if used & bit != 0 {
+                                    break;
+                                }
+                                used |= bit;
                             }
                             n += 1;
                         }

@@ -61,6 +61,24 @@ fn case(name: &str, json: &str, p: usize, scanlines: usize) -> Case {
             1 + name.contains("second") as usize,
             "{name}"
         );
+        // Each group's voxels in the volume lie in distinct memory modules,
+        // and some group (p > 1) spans P voxels or more: lanes take modules
+        // in any order, not only a window of P consecutive voxels.
+        let nx = view.dims[0] as i32;
+        for g in &config.groups {
+            let mut modules: Vec<i32> = (g.x.iter())
+                .filter(|&&x| g.plane < nk && (0..nx).contains(&x))
+                .map(|x| x.rem_euclid(p as i32))
+                .collect();
+            let n = modules.len();
+            modules.sort();
+            modules.dedup();
+            assert_eq!(modules.len(), n, "{name}: group {g:?} shares a module");
+        }
+        assert!(
+            p == 1 || (config.groups.iter()).any(|g| g.x[g.x.len() - 1] - g.x[0] >= p as i32),
+            "{name}: every group within {p} consecutive voxels"
+        );
     }
     let mut want = Vec::new();
     let traversal = prp::Traversal::new(&vol, view);
