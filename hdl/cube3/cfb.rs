@@ -27,11 +27,12 @@
 //!   plane.
 //! - *Perspective* (de-fanning, Fig. 3): the rays diverge from the eye, so
 //!   `X_k` grows by one or more from ray to ray and voxels between them are
-//!   not fetched. A group is as many rays (up to `P`) as have their `x`
-//!   within `P` consecutive voxels, which makes it conflict-free; the
-//!   host lists the groups of every plane ([`Group`]) and loads them into
-//!   tables,
-//!   one entry a clock, with `Y_k(v)` by scanline and plane. A PRP takes as
+//!   not fetched. A group is the next rays (up to `P`) while those whose
+//!   voxel lies in the volume have distinct `x mod P`, so that they read
+//!   distinct modules (the others read none): conflict-free, and up to `P`
+//!   rays a clock where they lie more than a voxel apart. The host lists
+//!   the groups of every plane ([`Group`]) and loads them into tables, one
+//!   entry a clock, with `Y_k(v)` by scanline and plane. A PRP takes as
 //!   many clocks as groups.
 //!
 //! **Fast Bus.** Ray `r` of plane `k` goes to 2-DSB module `(r + k) mod P`
