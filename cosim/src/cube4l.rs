@@ -79,6 +79,8 @@ lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used:
 lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'axes'*"
 lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'address_reg'*"
 lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'beats'*"
+lint_off -rule UNUSEDSIGNAL -file "*abc_gradient.v" -match "*Bits of signal are not used: 'beats'*"
+lint_off -rule UNUSEDSIGNAL -file "*tap_network.v" -match "*Bits of signal are not used: 'beats'*"
 lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*Bits of signal are not used: 'dims'*"
 lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*Bits of signal are not used: 'order'*"
 lint_off -rule UNUSEDSIGNAL -file "*compositor.v" -match "*Bits of signal are not used: 'order'*"

@@ -100,7 +100,11 @@ pub struct AbcGradient<const H: usize> {
     p_mask: Constant<Bits<16>>,
     enabled: Constant<Bit>,
     /// The lines' lengths less one: S - B - 2, B - 1 (twice), S - B - 1;
-    /// the lane's own registers.
+    /// the lane's own registers, one carry chain a clock from its own copy
+    /// of `Beats` (S and B to `H` bits) through S - B.
+    slice: LaneCopy<Bits<H>>,
+    beam: LaneCopy<Bits<H>>,
+    slice_less_beam: LaneCopy<Bits<H>>,
     last_a: LaneCopy<Bits<H>>,
     last_b: LaneCopy<Bits<H>>,
     last_d: LaneCopy<Bits<H>>,
@@ -163,6 +167,9 @@ impl<const H: usize> AbcGradient<H> {
             xp: Default::default(),
             p_mask: Constant::new(((c.p - 1) as u64).to_bits()),
             enabled: Constant::new(enabled),
+            slice: Default::default(),
+            beam: Default::default(),
+            slice_less_beam: Default::default(),
             last_a: Default::default(),
             last_b: Default::default(),
             last_d: Default::default(),
@@ -183,15 +190,17 @@ impl<const H: usize> Logic for AbcGradient<H> {
     fn update(&mut self) {
         dff_setup!(
             self, clock, reg_yp, reg_xm, reg_c, hop_xm, hop_ym, hop_zm, hop_xp, hop_yp, hop_zp,
-            prev_xm, prev_xp, last_a, last_b, last_d
+            prev_xm, prev_xp, slice, beam, slice_less_beam, last_a, last_b, last_d
         );
-        // The lines' lengths for the view (registered: `Beats` holds still
-        // through a sweep).
-        self.last_d.d.next = bit_cast::<H, 32>(
-            self.beats.val().get_bits::<32>(0) - self.beats.val().get_bits::<32>(32),
-        ) - 1;
-        self.last_a.d.next = self.last_d.d.val() - 1;
-        self.last_b.d.next = bit_cast::<H, 32>(self.beats.val().get_bits::<32>(32)) - 1;
+        // The lines' lengths for the view, three clocks behind `Beats`
+        // (which holds still through a sweep; the lines carry no sample
+        // of the sweep before its first beat, many clocks later).
+        self.slice.d.next = self.beats.val().get_bits::<H>(0);
+        self.beam.d.next = self.beats.val().get_bits::<H>(32);
+        self.slice_less_beam.d.next = self.slice.q.val() - self.beam.q.val();
+        self.last_d.d.next = self.slice_less_beam.q.val() - 1;
+        self.last_a.d.next = self.slice_less_beam.q.val() - 2;
+        self.last_b.d.next = self.beam.q.val() - 1;
         self.line_a.last.next = self.last_a.q.val();
         self.line_b.last.next = self.last_b.q.val();
         self.line_c.last.next = self.last_b.q.val();

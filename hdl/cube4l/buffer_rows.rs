@@ -47,7 +47,11 @@ pub struct BufferRows<const H: usize> {
     pick: [Constant<Bits<15>>; 9],
     sel: [Signal<Local, Bits<64>>; 9],
     /// The lines' lengths less one, from `Beats`: S - B - r - 5 and B - 1;
-    /// the lane's own registers.
+    /// the lane's own registers, one carry chain a clock from its own copy
+    /// of `Beats` (S and B to `H` bits) through S - B.
+    slice: LaneCopy<Bits<H>>,
+    beam: LaneCopy<Bits<H>>,
+    slice_less_beam: LaneCopy<Bits<H>>,
     ring_last: LaneCopy<Bits<H>>,
     beam_last: LaneCopy<Bits<H>>,
     ring_less: Constant<Bits<H>>,
@@ -81,6 +85,9 @@ impl<const H: usize> BufferRows<H> {
                 Constant::new((1u64 << (5 * row + i)).to_bits())
             }),
             sel: Default::default(),
+            slice: Default::default(),
+            beam: Default::default(),
+            slice_less_beam: Default::default(),
             ring_last: Default::default(),
             beam_last: Default::default(),
             ring_less: Constant::new(((RESULT_AT + 5) as u64).to_bits()),
@@ -96,13 +103,15 @@ impl<const H: usize> BufferRows<H> {
 impl<const H: usize> Logic for BufferRows<H> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, ring_last, beam_last);
-        // The lines' lengths for the view (registered: `Beats` holds still
-        // through a sweep).
-        self.ring_last.d.next = bit_cast::<H, 32>(
-            self.beats.val().get_bits::<32>(0) - self.beats.val().get_bits::<32>(32),
-        ) - self.ring_less.val();
-        self.beam_last.d.next = bit_cast::<H, 32>(self.beats.val().get_bits::<32>(32)) - 1;
+        dff_setup!(self, clock, slice, beam, slice_less_beam, ring_last, beam_last);
+        // The lines' lengths for the view, three clocks behind `Beats`
+        // (which holds still through a sweep; the ring takes the sweep's
+        // first result many clocks later).
+        self.slice.d.next = self.beats.val().get_bits::<H>(0);
+        self.beam.d.next = self.beats.val().get_bits::<H>(32);
+        self.slice_less_beam.d.next = self.slice.q.val() - self.beam.q.val();
+        self.ring_last.d.next = self.slice_less_beam.q.val() - self.ring_less.val();
+        self.beam_last.d.next = self.beam.q.val() - 1;
         self.ring.last.next = self.ring_last.q.val();
         self.beam0.last.next = self.beam_last.q.val();
         self.beam1.last.next = self.beam_last.q.val();

@@ -83,6 +83,15 @@ module top$lanes$0$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
     reg  [15:0] prev_xp$d;
     wire  [15:0] prev_xp$q;
     reg  prev_xp$clock;
+    reg  [15:0] slice$d;
+    wire  [15:0] slice$q;
+    reg  slice$clock;
+    reg  [15:0] beam$d;
+    wire  [15:0] beam$q;
+    reg  beam$clock;
+    reg  [15:0] slice_less_beam$d;
+    wire  [15:0] slice_less_beam$q;
+    reg  slice_less_beam$clock;
     reg  [15:0] last_a$d;
     wire  [15:0] last_a$q;
     reg  last_a$clock;
@@ -181,6 +190,21 @@ module top$lanes$0$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
         .q(prev_xp$q),
         .clock(prev_xp$clock)
     );
+    top$lanes$0$feed$abc$slice slice(
+        .d(slice$d),
+        .q(slice$q),
+        .clock(slice$clock)
+    );
+    top$lanes$0$feed$abc$beam beam(
+        .d(beam$d),
+        .q(beam$q),
+        .clock(beam$clock)
+    );
+    top$lanes$0$feed$abc$slice_less_beam slice_less_beam(
+        .d(slice_less_beam$d),
+        .q(slice_less_beam$q),
+        .clock(slice_less_beam$clock)
+    );
     top$lanes$0$feed$abc$last_a last_a(
         .d(last_a$d),
         .q(last_a$q),
@@ -223,6 +247,9 @@ module top$lanes$0$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
         hop_zp$clock = clock;
         prev_xm$clock = clock;
         prev_xp$clock = clock;
+        slice$clock = clock;
+        beam$clock = clock;
+        slice_less_beam$clock = clock;
         last_a$clock = clock;
         last_b$clock = clock;
         last_d$clock = clock;
@@ -237,12 +264,18 @@ module top$lanes$0$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
         hop_zp$d = hop_zp$q;
         prev_xm$d = prev_xm$q;
         prev_xp$d = prev_xp$q;
+        slice$d = slice$q;
+        beam$d = beam$q;
+        slice_less_beam$d = slice_less_beam$q;
         last_a$d = last_a$q;
         last_b$d = last_b$q;
         last_d$d = last_d$q;
-        last_d$d = 16'(beats[('h0)+:(32)] - beats[('h20)+:(32)]) - 'h1;
-        last_a$d = last_d$d - 'h1;
-        last_b$d = 16'(beats[('h20)+:(32)]) - 'h1;
+        slice$d = beats[('h0)+:(16)];
+        beam$d = beats[('h20)+:(16)];
+        slice_less_beam$d = slice$q - beam$q;
+        last_d$d = slice_less_beam$q - 'h1;
+        last_a$d = slice_less_beam$q - 'h2;
+        last_b$d = beam$q - 'h1;
         line_a$last = last_a$q;
         line_b$last = last_b$q;
         line_c$last = last_b$q;
@@ -331,6 +364,23 @@ module top$lanes$0$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
     end
     
 endmodule // top$lanes$0$feed$abc
+module top$lanes$0$feed$abc$beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$feed$abc$beam
 module top$lanes$0$feed$abc$hop_xm(d,q,clock);
     
     // Module arguments
@@ -2167,6 +2217,40 @@ module top$lanes$0$feed$abc$reg_yp(d,q,clock);
     end
           
 endmodule // top$lanes$0$feed$abc$reg_yp
+module top$lanes$0$feed$abc$slice(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$feed$abc$slice
+module top$lanes$0$feed$abc$slice_less_beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$feed$abc$slice_less_beam
 module top$lanes$1$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_value,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -2252,6 +2336,15 @@ module top$lanes$1$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
     reg  [15:0] prev_xp$d;
     wire  [15:0] prev_xp$q;
     reg  prev_xp$clock;
+    reg  [15:0] slice$d;
+    wire  [15:0] slice$q;
+    reg  slice$clock;
+    reg  [15:0] beam$d;
+    wire  [15:0] beam$q;
+    reg  beam$clock;
+    reg  [15:0] slice_less_beam$d;
+    wire  [15:0] slice_less_beam$q;
+    reg  slice_less_beam$clock;
     reg  [15:0] last_a$d;
     wire  [15:0] last_a$q;
     reg  last_a$clock;
@@ -2350,6 +2443,21 @@ module top$lanes$1$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
         .q(prev_xp$q),
         .clock(prev_xp$clock)
     );
+    top$lanes$1$feed$abc$slice slice(
+        .d(slice$d),
+        .q(slice$q),
+        .clock(slice$clock)
+    );
+    top$lanes$1$feed$abc$beam beam(
+        .d(beam$d),
+        .q(beam$q),
+        .clock(beam$clock)
+    );
+    top$lanes$1$feed$abc$slice_less_beam slice_less_beam(
+        .d(slice_less_beam$d),
+        .q(slice_less_beam$q),
+        .clock(slice_less_beam$clock)
+    );
     top$lanes$1$feed$abc$last_a last_a(
         .d(last_a$d),
         .q(last_a$q),
@@ -2392,6 +2500,9 @@ module top$lanes$1$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
         hop_zp$clock = clock;
         prev_xm$clock = clock;
         prev_xp$clock = clock;
+        slice$clock = clock;
+        beam$clock = clock;
+        slice_less_beam$clock = clock;
         last_a$clock = clock;
         last_b$clock = clock;
         last_d$clock = clock;
@@ -2406,12 +2517,18 @@ module top$lanes$1$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
         hop_zp$d = hop_zp$q;
         prev_xm$d = prev_xm$q;
         prev_xp$d = prev_xp$q;
+        slice$d = slice$q;
+        beam$d = beam$q;
+        slice_less_beam$d = slice_less_beam$q;
         last_a$d = last_a$q;
         last_b$d = last_b$q;
         last_d$d = last_d$q;
-        last_d$d = 16'(beats[('h0)+:(32)] - beats[('h20)+:(32)]) - 'h1;
-        last_a$d = last_d$d - 'h1;
-        last_b$d = 16'(beats[('h20)+:(32)]) - 'h1;
+        slice$d = beats[('h0)+:(16)];
+        beam$d = beats[('h20)+:(16)];
+        slice_less_beam$d = slice$q - beam$q;
+        last_d$d = slice_less_beam$q - 'h1;
+        last_a$d = slice_less_beam$q - 'h2;
+        last_b$d = beam$q - 'h1;
         line_a$last = last_a$q;
         line_b$last = last_b$q;
         line_c$last = last_b$q;
@@ -2500,6 +2617,23 @@ module top$lanes$1$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
     end
     
 endmodule // top$lanes$1$feed$abc
+module top$lanes$1$feed$abc$beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$feed$abc$beam
 module top$lanes$1$feed$abc$hop_xm(d,q,clock);
     
     // Module arguments
@@ -4336,6 +4470,40 @@ module top$lanes$1$feed$abc$reg_yp(d,q,clock);
     end
           
 endmodule // top$lanes$1$feed$abc$reg_yp
+module top$lanes$1$feed$abc$slice(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$feed$abc$slice
+module top$lanes$1$feed$abc$slice_less_beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$feed$abc$slice_less_beam
 module top$lanes$2$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_value,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -4421,6 +4589,15 @@ module top$lanes$2$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
     reg  [15:0] prev_xp$d;
     wire  [15:0] prev_xp$q;
     reg  prev_xp$clock;
+    reg  [15:0] slice$d;
+    wire  [15:0] slice$q;
+    reg  slice$clock;
+    reg  [15:0] beam$d;
+    wire  [15:0] beam$q;
+    reg  beam$clock;
+    reg  [15:0] slice_less_beam$d;
+    wire  [15:0] slice_less_beam$q;
+    reg  slice_less_beam$clock;
     reg  [15:0] last_a$d;
     wire  [15:0] last_a$q;
     reg  last_a$clock;
@@ -4519,6 +4696,21 @@ module top$lanes$2$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
         .q(prev_xp$q),
         .clock(prev_xp$clock)
     );
+    top$lanes$2$feed$abc$slice slice(
+        .d(slice$d),
+        .q(slice$q),
+        .clock(slice$clock)
+    );
+    top$lanes$2$feed$abc$beam beam(
+        .d(beam$d),
+        .q(beam$q),
+        .clock(beam$clock)
+    );
+    top$lanes$2$feed$abc$slice_less_beam slice_less_beam(
+        .d(slice_less_beam$d),
+        .q(slice_less_beam$q),
+        .clock(slice_less_beam$clock)
+    );
     top$lanes$2$feed$abc$last_a last_a(
         .d(last_a$d),
         .q(last_a$q),
@@ -4561,6 +4753,9 @@ module top$lanes$2$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
         hop_zp$clock = clock;
         prev_xm$clock = clock;
         prev_xp$clock = clock;
+        slice$clock = clock;
+        beam$clock = clock;
+        slice_less_beam$clock = clock;
         last_a$clock = clock;
         last_b$clock = clock;
         last_d$clock = clock;
@@ -4575,12 +4770,18 @@ module top$lanes$2$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
         hop_zp$d = hop_zp$q;
         prev_xm$d = prev_xm$q;
         prev_xp$d = prev_xp$q;
+        slice$d = slice$q;
+        beam$d = beam$q;
+        slice_less_beam$d = slice_less_beam$q;
         last_a$d = last_a$q;
         last_b$d = last_b$q;
         last_d$d = last_d$q;
-        last_d$d = 16'(beats[('h0)+:(32)] - beats[('h20)+:(32)]) - 'h1;
-        last_a$d = last_d$d - 'h1;
-        last_b$d = 16'(beats[('h20)+:(32)]) - 'h1;
+        slice$d = beats[('h0)+:(16)];
+        beam$d = beats[('h20)+:(16)];
+        slice_less_beam$d = slice$q - beam$q;
+        last_d$d = slice_less_beam$q - 'h1;
+        last_a$d = slice_less_beam$q - 'h2;
+        last_b$d = beam$q - 'h1;
         line_a$last = last_a$q;
         line_b$last = last_b$q;
         line_c$last = last_b$q;
@@ -4669,6 +4870,23 @@ module top$lanes$2$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
     end
     
 endmodule // top$lanes$2$feed$abc
+module top$lanes$2$feed$abc$beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$feed$abc$beam
 module top$lanes$2$feed$abc$hop_xm(d,q,clock);
     
     // Module arguments
@@ -6505,6 +6723,40 @@ module top$lanes$2$feed$abc$reg_yp(d,q,clock);
     end
           
 endmodule // top$lanes$2$feed$abc$reg_yp
+module top$lanes$2$feed$abc$slice(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$feed$abc$slice
+module top$lanes$2$feed$abc$slice_less_beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$feed$abc$slice_less_beam
 module top$lanes$3$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_left_zm,from_right_xp,from_right_yp,from_right_zp,to_right_xm,to_right_ym,to_right_zm,to_left_xp,to_left_yp,to_left_zp,o_value,gx_neg,gx_mag,gy_neg,gy_mag,gz_neg,gz_mag);
     
     // Module arguments
@@ -6590,6 +6842,15 @@ module top$lanes$3$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
     reg  [15:0] prev_xp$d;
     wire  [15:0] prev_xp$q;
     reg  prev_xp$clock;
+    reg  [15:0] slice$d;
+    wire  [15:0] slice$q;
+    reg  slice$clock;
+    reg  [15:0] beam$d;
+    wire  [15:0] beam$q;
+    reg  beam$clock;
+    reg  [15:0] slice_less_beam$d;
+    wire  [15:0] slice_less_beam$q;
+    reg  slice_less_beam$clock;
     reg  [15:0] last_a$d;
     wire  [15:0] last_a$q;
     reg  last_a$clock;
@@ -6688,6 +6949,21 @@ module top$lanes$3$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
         .q(prev_xp$q),
         .clock(prev_xp$clock)
     );
+    top$lanes$3$feed$abc$slice slice(
+        .d(slice$d),
+        .q(slice$q),
+        .clock(slice$clock)
+    );
+    top$lanes$3$feed$abc$beam beam(
+        .d(beam$d),
+        .q(beam$q),
+        .clock(beam$clock)
+    );
+    top$lanes$3$feed$abc$slice_less_beam slice_less_beam(
+        .d(slice_less_beam$d),
+        .q(slice_less_beam$q),
+        .clock(slice_less_beam$clock)
+    );
     top$lanes$3$feed$abc$last_a last_a(
         .d(last_a$d),
         .q(last_a$q),
@@ -6730,6 +7006,9 @@ module top$lanes$3$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
         hop_zp$clock = clock;
         prev_xm$clock = clock;
         prev_xp$clock = clock;
+        slice$clock = clock;
+        beam$clock = clock;
+        slice_less_beam$clock = clock;
         last_a$clock = clock;
         last_b$clock = clock;
         last_d$clock = clock;
@@ -6744,12 +7023,18 @@ module top$lanes$3$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
         hop_zp$d = hop_zp$q;
         prev_xm$d = prev_xm$q;
         prev_xp$d = prev_xp$q;
+        slice$d = slice$q;
+        beam$d = beam$q;
+        slice_less_beam$d = slice_less_beam$q;
         last_a$d = last_a$q;
         last_b$d = last_b$q;
         last_d$d = last_d$q;
-        last_d$d = 16'(beats[('h0)+:(32)] - beats[('h20)+:(32)]) - 'h1;
-        last_a$d = last_d$d - 'h1;
-        last_b$d = 16'(beats[('h20)+:(32)]) - 'h1;
+        slice$d = beats[('h0)+:(16)];
+        beam$d = beats[('h20)+:(16)];
+        slice_less_beam$d = slice$q - beam$q;
+        last_d$d = slice_less_beam$q - 'h1;
+        last_a$d = slice_less_beam$q - 'h2;
+        last_b$d = beam$q - 'h1;
         line_a$last = last_a$q;
         line_b$last = last_b$q;
         line_c$last = last_b$q;
@@ -6838,6 +7123,23 @@ module top$lanes$3$feed$abc(clock,beats,value,x,from_left_xm,from_left_ym,from_l
     end
     
 endmodule // top$lanes$3$feed$abc
+module top$lanes$3$feed$abc$beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$feed$abc$beam
 module top$lanes$3$feed$abc$hop_xm(d,q,clock);
     
     // Module arguments
@@ -8674,3 +8976,37 @@ module top$lanes$3$feed$abc$reg_yp(d,q,clock);
     end
           
 endmodule // top$lanes$3$feed$abc$reg_yp
+module top$lanes$3$feed$abc$slice(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$feed$abc$slice
+module top$lanes$3$feed$abc$slice_less_beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$feed$abc$slice_less_beam

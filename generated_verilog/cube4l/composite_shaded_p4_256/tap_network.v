@@ -368,6 +368,15 @@ module top$lanes$0$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     reg  [63:0] stage$11$d;
     wire  [63:0] stage$11$q;
     reg  stage$11$clock;
+    reg  [15:0] slice$d;
+    wire  [15:0] slice$q;
+    reg  slice$clock;
+    reg  [15:0] beam$d;
+    wire  [15:0] beam$q;
+    reg  beam$clock;
+    reg  [15:0] slice_less_beam$d;
+    wire  [15:0] slice_less_beam$q;
+    reg  slice_less_beam$clock;
     reg  [15:0] ring_last$d;
     wire  [15:0] ring_last$q;
     reg  ring_last$clock;
@@ -483,6 +492,21 @@ module top$lanes$0$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
         .q(stage$11$q),
         .clock(stage$11$clock)
     );
+    top$lanes$0$taps$rows$slice slice(
+        .d(slice$d),
+        .q(slice$q),
+        .clock(slice$clock)
+    );
+    top$lanes$0$taps$rows$beam beam(
+        .d(beam$d),
+        .q(beam$q),
+        .clock(beam$clock)
+    );
+    top$lanes$0$taps$rows$slice_less_beam slice_less_beam(
+        .d(slice_less_beam$d),
+        .q(slice_less_beam$q),
+        .clock(slice_less_beam$clock)
+    );
     top$lanes$0$taps$rows$ring_last ring_last(
         .d(ring_last$d),
         .q(ring_last$q),
@@ -496,12 +520,21 @@ module top$lanes$0$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     
     // Update code
     always @(*) begin
+        slice$clock = clock;
+        beam$clock = clock;
+        slice_less_beam$clock = clock;
         ring_last$clock = clock;
         beam_last$clock = clock;
+        slice$d = slice$q;
+        beam$d = beam$q;
+        slice_less_beam$d = slice_less_beam$q;
         ring_last$d = ring_last$q;
         beam_last$d = beam_last$q;
-        ring_last$d = 16'(beats[('h0)+:(32)] - beats[('h20)+:(32)]) - ring_less;
-        beam_last$d = 16'(beats[('h20)+:(32)]) - 'h1;
+        slice$d = beats[('h0)+:(16)];
+        beam$d = beats[('h20)+:(16)];
+        slice_less_beam$d = slice$q - beam$q;
+        ring_last$d = slice_less_beam$q - ring_less;
+        beam_last$d = beam$q - 'h1;
         ring$last = ring_last$q;
         beam0$last = beam_last$q;
         beam1$last = beam_last$q;
@@ -952,6 +985,23 @@ module top$lanes$0$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     end
     
 endmodule // top$lanes$0$taps$rows
+module top$lanes$0$taps$rows$beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$taps$rows$beam
 module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -2267,6 +2317,40 @@ module top$lanes$0$taps$rows$ring_last(d,q,clock);
        q <= d;
     end
 endmodule // top$lanes$0$taps$rows$ring_last
+module top$lanes$0$taps$rows$slice(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$taps$rows$slice
+module top$lanes$0$taps$rows$slice_less_beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$taps$rows$slice_less_beam
 module top$lanes$0$taps$rows$stage$0(d,q,clock);
     
     // Module arguments
@@ -3742,6 +3826,15 @@ module top$lanes$1$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     reg  [63:0] stage$11$d;
     wire  [63:0] stage$11$q;
     reg  stage$11$clock;
+    reg  [15:0] slice$d;
+    wire  [15:0] slice$q;
+    reg  slice$clock;
+    reg  [15:0] beam$d;
+    wire  [15:0] beam$q;
+    reg  beam$clock;
+    reg  [15:0] slice_less_beam$d;
+    wire  [15:0] slice_less_beam$q;
+    reg  slice_less_beam$clock;
     reg  [15:0] ring_last$d;
     wire  [15:0] ring_last$q;
     reg  ring_last$clock;
@@ -3857,6 +3950,21 @@ module top$lanes$1$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
         .q(stage$11$q),
         .clock(stage$11$clock)
     );
+    top$lanes$1$taps$rows$slice slice(
+        .d(slice$d),
+        .q(slice$q),
+        .clock(slice$clock)
+    );
+    top$lanes$1$taps$rows$beam beam(
+        .d(beam$d),
+        .q(beam$q),
+        .clock(beam$clock)
+    );
+    top$lanes$1$taps$rows$slice_less_beam slice_less_beam(
+        .d(slice_less_beam$d),
+        .q(slice_less_beam$q),
+        .clock(slice_less_beam$clock)
+    );
     top$lanes$1$taps$rows$ring_last ring_last(
         .d(ring_last$d),
         .q(ring_last$q),
@@ -3870,12 +3978,21 @@ module top$lanes$1$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     
     // Update code
     always @(*) begin
+        slice$clock = clock;
+        beam$clock = clock;
+        slice_less_beam$clock = clock;
         ring_last$clock = clock;
         beam_last$clock = clock;
+        slice$d = slice$q;
+        beam$d = beam$q;
+        slice_less_beam$d = slice_less_beam$q;
         ring_last$d = ring_last$q;
         beam_last$d = beam_last$q;
-        ring_last$d = 16'(beats[('h0)+:(32)] - beats[('h20)+:(32)]) - ring_less;
-        beam_last$d = 16'(beats[('h20)+:(32)]) - 'h1;
+        slice$d = beats[('h0)+:(16)];
+        beam$d = beats[('h20)+:(16)];
+        slice_less_beam$d = slice$q - beam$q;
+        ring_last$d = slice_less_beam$q - ring_less;
+        beam_last$d = beam$q - 'h1;
         ring$last = ring_last$q;
         beam0$last = beam_last$q;
         beam1$last = beam_last$q;
@@ -4326,6 +4443,23 @@ module top$lanes$1$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     end
     
 endmodule // top$lanes$1$taps$rows
+module top$lanes$1$taps$rows$beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$taps$rows$beam
 module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -5641,6 +5775,40 @@ module top$lanes$1$taps$rows$ring_last(d,q,clock);
        q <= d;
     end
 endmodule // top$lanes$1$taps$rows$ring_last
+module top$lanes$1$taps$rows$slice(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$taps$rows$slice
+module top$lanes$1$taps$rows$slice_less_beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$taps$rows$slice_less_beam
 module top$lanes$1$taps$rows$stage$0(d,q,clock);
     
     // Module arguments
@@ -7116,6 +7284,15 @@ module top$lanes$2$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     reg  [63:0] stage$11$d;
     wire  [63:0] stage$11$q;
     reg  stage$11$clock;
+    reg  [15:0] slice$d;
+    wire  [15:0] slice$q;
+    reg  slice$clock;
+    reg  [15:0] beam$d;
+    wire  [15:0] beam$q;
+    reg  beam$clock;
+    reg  [15:0] slice_less_beam$d;
+    wire  [15:0] slice_less_beam$q;
+    reg  slice_less_beam$clock;
     reg  [15:0] ring_last$d;
     wire  [15:0] ring_last$q;
     reg  ring_last$clock;
@@ -7231,6 +7408,21 @@ module top$lanes$2$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
         .q(stage$11$q),
         .clock(stage$11$clock)
     );
+    top$lanes$2$taps$rows$slice slice(
+        .d(slice$d),
+        .q(slice$q),
+        .clock(slice$clock)
+    );
+    top$lanes$2$taps$rows$beam beam(
+        .d(beam$d),
+        .q(beam$q),
+        .clock(beam$clock)
+    );
+    top$lanes$2$taps$rows$slice_less_beam slice_less_beam(
+        .d(slice_less_beam$d),
+        .q(slice_less_beam$q),
+        .clock(slice_less_beam$clock)
+    );
     top$lanes$2$taps$rows$ring_last ring_last(
         .d(ring_last$d),
         .q(ring_last$q),
@@ -7244,12 +7436,21 @@ module top$lanes$2$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     
     // Update code
     always @(*) begin
+        slice$clock = clock;
+        beam$clock = clock;
+        slice_less_beam$clock = clock;
         ring_last$clock = clock;
         beam_last$clock = clock;
+        slice$d = slice$q;
+        beam$d = beam$q;
+        slice_less_beam$d = slice_less_beam$q;
         ring_last$d = ring_last$q;
         beam_last$d = beam_last$q;
-        ring_last$d = 16'(beats[('h0)+:(32)] - beats[('h20)+:(32)]) - ring_less;
-        beam_last$d = 16'(beats[('h20)+:(32)]) - 'h1;
+        slice$d = beats[('h0)+:(16)];
+        beam$d = beats[('h20)+:(16)];
+        slice_less_beam$d = slice$q - beam$q;
+        ring_last$d = slice_less_beam$q - ring_less;
+        beam_last$d = beam$q - 'h1;
         ring$last = ring_last$q;
         beam0$last = beam_last$q;
         beam1$last = beam_last$q;
@@ -7700,6 +7901,23 @@ module top$lanes$2$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     end
     
 endmodule // top$lanes$2$taps$rows
+module top$lanes$2$taps$rows$beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$taps$rows$beam
 module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -9015,6 +9233,40 @@ module top$lanes$2$taps$rows$ring_last(d,q,clock);
        q <= d;
     end
 endmodule // top$lanes$2$taps$rows$ring_last
+module top$lanes$2$taps$rows$slice(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$taps$rows$slice
+module top$lanes$2$taps$rows$slice_less_beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$taps$rows$slice_less_beam
 module top$lanes$2$taps$rows$stage$0(d,q,clock);
     
     // Module arguments
@@ -10490,6 +10742,15 @@ module top$lanes$3$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     reg  [63:0] stage$11$d;
     wire  [63:0] stage$11$q;
     reg  stage$11$clock;
+    reg  [15:0] slice$d;
+    wire  [15:0] slice$q;
+    reg  slice$clock;
+    reg  [15:0] beam$d;
+    wire  [15:0] beam$q;
+    reg  beam$clock;
+    reg  [15:0] slice_less_beam$d;
+    wire  [15:0] slice_less_beam$q;
+    reg  slice_less_beam$clock;
     reg  [15:0] ring_last$d;
     wire  [15:0] ring_last$q;
     reg  ring_last$clock;
@@ -10605,6 +10866,21 @@ module top$lanes$3$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
         .q(stage$11$q),
         .clock(stage$11$clock)
     );
+    top$lanes$3$taps$rows$slice slice(
+        .d(slice$d),
+        .q(slice$q),
+        .clock(slice$clock)
+    );
+    top$lanes$3$taps$rows$beam beam(
+        .d(beam$d),
+        .q(beam$q),
+        .clock(beam$clock)
+    );
+    top$lanes$3$taps$rows$slice_less_beam slice_less_beam(
+        .d(slice_less_beam$d),
+        .q(slice_less_beam$q),
+        .clock(slice_less_beam$clock)
+    );
     top$lanes$3$taps$rows$ring_last ring_last(
         .d(ring_last$d),
         .q(ring_last$q),
@@ -10618,12 +10894,21 @@ module top$lanes$3$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     
     // Update code
     always @(*) begin
+        slice$clock = clock;
+        beam$clock = clock;
+        slice_less_beam$clock = clock;
         ring_last$clock = clock;
         beam_last$clock = clock;
+        slice$d = slice$q;
+        beam$d = beam$q;
+        slice_less_beam$d = slice_less_beam$q;
         ring_last$d = ring_last$q;
         beam_last$d = beam_last$q;
-        ring_last$d = 16'(beats[('h0)+:(32)] - beats[('h20)+:(32)]) - ring_less;
-        beam_last$d = 16'(beats[('h20)+:(32)]) - 'h1;
+        slice$d = beats[('h0)+:(16)];
+        beam$d = beats[('h20)+:(16)];
+        slice_less_beam$d = slice$q - beam$q;
+        ring_last$d = slice_less_beam$q - ring_less;
+        beam_last$d = beam$q - 'h1;
         ring$last = ring_last$q;
         beam0$last = beam_last$q;
         beam1$last = beam_last$q;
@@ -11074,6 +11359,23 @@ module top$lanes$3$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     end
     
 endmodule // top$lanes$3$taps$rows
+module top$lanes$3$taps$rows$beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$taps$rows$beam
 module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -12389,6 +12691,40 @@ module top$lanes$3$taps$rows$ring_last(d,q,clock);
        q <= d;
     end
 endmodule // top$lanes$3$taps$rows$ring_last
+module top$lanes$3$taps$rows$slice(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$taps$rows$slice
+module top$lanes$3$taps$rows$slice_less_beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$taps$rows$slice_less_beam
 module top$lanes$3$taps$rows$stage$0(d,q,clock);
     
     // Module arguments

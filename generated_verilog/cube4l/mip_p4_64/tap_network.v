@@ -368,6 +368,15 @@ module top$lanes$0$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     reg  [63:0] stage$11$d;
     wire  [63:0] stage$11$q;
     reg  stage$11$clock;
+    reg  [15:0] slice$d;
+    wire  [15:0] slice$q;
+    reg  slice$clock;
+    reg  [15:0] beam$d;
+    wire  [15:0] beam$q;
+    reg  beam$clock;
+    reg  [15:0] slice_less_beam$d;
+    wire  [15:0] slice_less_beam$q;
+    reg  slice_less_beam$clock;
     reg  [15:0] ring_last$d;
     wire  [15:0] ring_last$q;
     reg  ring_last$clock;
@@ -483,6 +492,21 @@ module top$lanes$0$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
         .q(stage$11$q),
         .clock(stage$11$clock)
     );
+    top$lanes$0$taps$rows$slice slice(
+        .d(slice$d),
+        .q(slice$q),
+        .clock(slice$clock)
+    );
+    top$lanes$0$taps$rows$beam beam(
+        .d(beam$d),
+        .q(beam$q),
+        .clock(beam$clock)
+    );
+    top$lanes$0$taps$rows$slice_less_beam slice_less_beam(
+        .d(slice_less_beam$d),
+        .q(slice_less_beam$q),
+        .clock(slice_less_beam$clock)
+    );
     top$lanes$0$taps$rows$ring_last ring_last(
         .d(ring_last$d),
         .q(ring_last$q),
@@ -496,12 +520,21 @@ module top$lanes$0$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     
     // Update code
     always @(*) begin
+        slice$clock = clock;
+        beam$clock = clock;
+        slice_less_beam$clock = clock;
         ring_last$clock = clock;
         beam_last$clock = clock;
+        slice$d = slice$q;
+        beam$d = beam$q;
+        slice_less_beam$d = slice_less_beam$q;
         ring_last$d = ring_last$q;
         beam_last$d = beam_last$q;
-        ring_last$d = 16'(beats[('h0)+:(32)] - beats[('h20)+:(32)]) - ring_less;
-        beam_last$d = 16'(beats[('h20)+:(32)]) - 'h1;
+        slice$d = beats[('h0)+:(16)];
+        beam$d = beats[('h20)+:(16)];
+        slice_less_beam$d = slice$q - beam$q;
+        ring_last$d = slice_less_beam$q - ring_less;
+        beam_last$d = beam$q - 'h1;
         ring$last = ring_last$q;
         beam0$last = beam_last$q;
         beam1$last = beam_last$q;
@@ -952,6 +985,23 @@ module top$lanes$0$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     end
     
 endmodule // top$lanes$0$taps$rows
+module top$lanes$0$taps$rows$beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$taps$rows$beam
 module top$lanes$0$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -2143,6 +2193,40 @@ module top$lanes$0$taps$rows$ring_last(d,q,clock);
        q <= d;
     end
 endmodule // top$lanes$0$taps$rows$ring_last
+module top$lanes$0$taps$rows$slice(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$taps$rows$slice
+module top$lanes$0$taps$rows$slice_less_beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$0$taps$rows$slice_less_beam
 module top$lanes$0$taps$rows$stage$0(d,q,clock);
     
     // Module arguments
@@ -3618,6 +3702,15 @@ module top$lanes$1$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     reg  [63:0] stage$11$d;
     wire  [63:0] stage$11$q;
     reg  stage$11$clock;
+    reg  [15:0] slice$d;
+    wire  [15:0] slice$q;
+    reg  slice$clock;
+    reg  [15:0] beam$d;
+    wire  [15:0] beam$q;
+    reg  beam$clock;
+    reg  [15:0] slice_less_beam$d;
+    wire  [15:0] slice_less_beam$q;
+    reg  slice_less_beam$clock;
     reg  [15:0] ring_last$d;
     wire  [15:0] ring_last$q;
     reg  ring_last$clock;
@@ -3733,6 +3826,21 @@ module top$lanes$1$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
         .q(stage$11$q),
         .clock(stage$11$clock)
     );
+    top$lanes$1$taps$rows$slice slice(
+        .d(slice$d),
+        .q(slice$q),
+        .clock(slice$clock)
+    );
+    top$lanes$1$taps$rows$beam beam(
+        .d(beam$d),
+        .q(beam$q),
+        .clock(beam$clock)
+    );
+    top$lanes$1$taps$rows$slice_less_beam slice_less_beam(
+        .d(slice_less_beam$d),
+        .q(slice_less_beam$q),
+        .clock(slice_less_beam$clock)
+    );
     top$lanes$1$taps$rows$ring_last ring_last(
         .d(ring_last$d),
         .q(ring_last$q),
@@ -3746,12 +3854,21 @@ module top$lanes$1$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     
     // Update code
     always @(*) begin
+        slice$clock = clock;
+        beam$clock = clock;
+        slice_less_beam$clock = clock;
         ring_last$clock = clock;
         beam_last$clock = clock;
+        slice$d = slice$q;
+        beam$d = beam$q;
+        slice_less_beam$d = slice_less_beam$q;
         ring_last$d = ring_last$q;
         beam_last$d = beam_last$q;
-        ring_last$d = 16'(beats[('h0)+:(32)] - beats[('h20)+:(32)]) - ring_less;
-        beam_last$d = 16'(beats[('h20)+:(32)]) - 'h1;
+        slice$d = beats[('h0)+:(16)];
+        beam$d = beats[('h20)+:(16)];
+        slice_less_beam$d = slice$q - beam$q;
+        ring_last$d = slice_less_beam$q - ring_less;
+        beam_last$d = beam$q - 'h1;
         ring$last = ring_last$q;
         beam0$last = beam_last$q;
         beam1$last = beam_last$q;
@@ -4202,6 +4319,23 @@ module top$lanes$1$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     end
     
 endmodule // top$lanes$1$taps$rows
+module top$lanes$1$taps$rows$beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$taps$rows$beam
 module top$lanes$1$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -5393,6 +5527,40 @@ module top$lanes$1$taps$rows$ring_last(d,q,clock);
        q <= d;
     end
 endmodule // top$lanes$1$taps$rows$ring_last
+module top$lanes$1$taps$rows$slice(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$taps$rows$slice
+module top$lanes$1$taps$rows$slice_less_beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$1$taps$rows$slice_less_beam
 module top$lanes$1$taps$rows$stage$0(d,q,clock);
     
     // Module arguments
@@ -6868,6 +7036,15 @@ module top$lanes$2$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     reg  [63:0] stage$11$d;
     wire  [63:0] stage$11$q;
     reg  stage$11$clock;
+    reg  [15:0] slice$d;
+    wire  [15:0] slice$q;
+    reg  slice$clock;
+    reg  [15:0] beam$d;
+    wire  [15:0] beam$q;
+    reg  beam$clock;
+    reg  [15:0] slice_less_beam$d;
+    wire  [15:0] slice_less_beam$q;
+    reg  slice_less_beam$clock;
     reg  [15:0] ring_last$d;
     wire  [15:0] ring_last$q;
     reg  ring_last$clock;
@@ -6983,6 +7160,21 @@ module top$lanes$2$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
         .q(stage$11$q),
         .clock(stage$11$clock)
     );
+    top$lanes$2$taps$rows$slice slice(
+        .d(slice$d),
+        .q(slice$q),
+        .clock(slice$clock)
+    );
+    top$lanes$2$taps$rows$beam beam(
+        .d(beam$d),
+        .q(beam$q),
+        .clock(beam$clock)
+    );
+    top$lanes$2$taps$rows$slice_less_beam slice_less_beam(
+        .d(slice_less_beam$d),
+        .q(slice_less_beam$q),
+        .clock(slice_less_beam$clock)
+    );
     top$lanes$2$taps$rows$ring_last ring_last(
         .d(ring_last$d),
         .q(ring_last$q),
@@ -6996,12 +7188,21 @@ module top$lanes$2$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     
     // Update code
     always @(*) begin
+        slice$clock = clock;
+        beam$clock = clock;
+        slice_less_beam$clock = clock;
         ring_last$clock = clock;
         beam_last$clock = clock;
+        slice$d = slice$q;
+        beam$d = beam$q;
+        slice_less_beam$d = slice_less_beam$q;
         ring_last$d = ring_last$q;
         beam_last$d = beam_last$q;
-        ring_last$d = 16'(beats[('h0)+:(32)] - beats[('h20)+:(32)]) - ring_less;
-        beam_last$d = 16'(beats[('h20)+:(32)]) - 'h1;
+        slice$d = beats[('h0)+:(16)];
+        beam$d = beats[('h20)+:(16)];
+        slice_less_beam$d = slice$q - beam$q;
+        ring_last$d = slice_less_beam$q - ring_less;
+        beam_last$d = beam$q - 'h1;
         ring$last = ring_last$q;
         beam0$last = beam_last$q;
         beam1$last = beam_last$q;
@@ -7452,6 +7653,23 @@ module top$lanes$2$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     end
     
 endmodule // top$lanes$2$taps$rows
+module top$lanes$2$taps$rows$beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$taps$rows$beam
 module top$lanes$2$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -8643,6 +8861,40 @@ module top$lanes$2$taps$rows$ring_last(d,q,clock);
        q <= d;
     end
 endmodule // top$lanes$2$taps$rows$ring_last
+module top$lanes$2$taps$rows$slice(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$taps$rows$slice
+module top$lanes$2$taps$rows$slice_less_beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$2$taps$rows$slice_less_beam
 module top$lanes$2$taps$rows$stage$0(d,q,clock);
     
     // Module arguments
@@ -10118,6 +10370,15 @@ module top$lanes$3$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     reg  [63:0] stage$11$d;
     wire  [63:0] stage$11$q;
     reg  stage$11$clock;
+    reg  [15:0] slice$d;
+    wire  [15:0] slice$q;
+    reg  slice$clock;
+    reg  [15:0] beam$d;
+    wire  [15:0] beam$q;
+    reg  beam$clock;
+    reg  [15:0] slice_less_beam$d;
+    wire  [15:0] slice_less_beam$q;
+    reg  slice_less_beam$clock;
     reg  [15:0] ring_last$d;
     wire  [15:0] ring_last$q;
     reg  ring_last$clock;
@@ -10233,6 +10494,21 @@ module top$lanes$3$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
         .q(stage$11$q),
         .clock(stage$11$clock)
     );
+    top$lanes$3$taps$rows$slice slice(
+        .d(slice$d),
+        .q(slice$q),
+        .clock(slice$clock)
+    );
+    top$lanes$3$taps$rows$beam beam(
+        .d(beam$d),
+        .q(beam$q),
+        .clock(beam$clock)
+    );
+    top$lanes$3$taps$rows$slice_less_beam slice_less_beam(
+        .d(slice_less_beam$d),
+        .q(slice_less_beam$q),
+        .clock(slice_less_beam$clock)
+    );
     top$lanes$3$taps$rows$ring_last ring_last(
         .d(ring_last$d),
         .q(ring_last$q),
@@ -10246,12 +10522,21 @@ module top$lanes$3$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     
     // Update code
     always @(*) begin
+        slice$clock = clock;
+        beam$clock = clock;
+        slice_less_beam$clock = clock;
         ring_last$clock = clock;
         beam_last$clock = clock;
+        slice$d = slice$q;
+        beam$d = beam$q;
+        slice_less_beam$d = slice_less_beam$q;
         ring_last$d = ring_last$q;
         beam_last$d = beam_last$q;
-        ring_last$d = 16'(beats[('h0)+:(32)] - beats[('h20)+:(32)]) - ring_less;
-        beam_last$d = 16'(beats[('h20)+:(32)]) - 'h1;
+        slice$d = beats[('h0)+:(16)];
+        beam$d = beats[('h20)+:(16)];
+        slice_less_beam$d = slice$q - beam$q;
+        ring_last$d = slice_less_beam$q - ring_less;
+        beam_last$d = beam$q - 'h1;
         ring$last = ring_last$q;
         beam0$last = beam_last$q;
         beam1$last = beam_last$q;
@@ -10702,6 +10987,23 @@ module top$lanes$3$taps$rows(clock,beats,res,res_beat,tap$0,tap$1,tap$2,tap$3,ta
     end
     
 endmodule // top$lanes$3$taps$rows
+module top$lanes$3$taps$rows$beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$taps$rows$beam
 module top$lanes$3$taps$rows$beam0(clock,data_in,write_enable,data_out,last);
     
     // Module arguments
@@ -11893,6 +12195,40 @@ module top$lanes$3$taps$rows$ring_last(d,q,clock);
        q <= d;
     end
 endmodule // top$lanes$3$taps$rows$ring_last
+module top$lanes$3$taps$rows$slice(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$taps$rows$slice
+module top$lanes$3$taps$rows$slice_less_beam(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    (* keep *)
+    always @(posedge clock) begin
+       q <= d;
+    end
+endmodule // top$lanes$3$taps$rows$slice_less_beam
 module top$lanes$3$taps$rows$stage$0(d,q,clock);
     
     // Module arguments
