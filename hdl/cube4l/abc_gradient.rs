@@ -189,8 +189,25 @@ impl<const H: usize> Logic for AbcGradient<H> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, reg_yp, reg_xm, reg_c, hop_xm, hop_ym, hop_zm, hop_xp, hop_yp, hop_zp,
-            prev_xm, prev_xp, slice, beam, slice_less_beam, last_a, last_b, last_d
+            self,
+            clock,
+            reg_yp,
+            reg_xm,
+            reg_c,
+            hop_xm,
+            hop_ym,
+            hop_zm,
+            hop_xp,
+            hop_yp,
+            hop_zp,
+            prev_xm,
+            prev_xp,
+            slice,
+            beam,
+            slice_less_beam,
+            last_a,
+            last_b,
+            last_d
         );
         // The lines' lengths for the view, three clocks behind `Beats`
         // (which holds still through a sweep; the lines carry no sample

@@ -103,7 +103,15 @@ impl<const H: usize> BufferRows<H> {
 impl<const H: usize> Logic for BufferRows<H> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, slice, beam, slice_less_beam, ring_last, beam_last);
+        dff_setup!(
+            self,
+            clock,
+            slice,
+            beam,
+            slice_less_beam,
+            ring_last,
+            beam_last
+        );
         // The lines' lengths for the view, three clocks behind `Beats`
         // (which holds still through a sweep; the ring takes the sweep's
         // first result many clocks later).
