@@ -13,7 +13,9 @@ use crate::camera::{check_dir, Camera, ViewSpec};
 use crate::error::{CubeError, Result};
 use crate::volume::{max_value, VolumeSpec, BUILTINS};
 use glam::DVec3;
+use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::Deserialize;
+use std::marker::PhantomData;
 use std::path::Path;
 
 /// Largest accepted volume side; larger sides are treated as absurd input.
@@ -30,24 +32,26 @@ pub const MAX_IMAGE: u32 = 8192;
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SceneSpec {
+    #[serde(deserialize_with = "object")]
     pub volume: VolumeSpec,
+    #[serde(deserialize_with = "object")]
     pub view: ViewSpec,
     #[serde(default)]
     pub mode: Mode,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "object")]
     pub transfer: Transfer,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "object")]
     pub shading: Shading,
     #[serde(default = "default_image")]
     pub image: [u32; 2],
-    #[serde(default)]
+    #[serde(default, deserialize_with = "object")]
     pub hardware: Hardware,
     /// Cube-3 only: gradient neighbourhood and datapath widths.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "object")]
     pub cube3: Cube3Spec,
     /// Quantized-voxel path only: subdivisions, normals, empty-space grid,
     /// traversal order and splat kernel.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "object")]
     pub quantized: QuantizedSpec,
 }
 
@@ -443,11 +447,80 @@ fn scene_err(msg: impl Into<String>) -> CubeError {
     CubeError::Scene(msg.into())
 }
 
+/// Deserialise a struct from a JSON object only. serde's derived structs
+/// also take a sequence (`"hardware": [1, 8, 8, 8, 5]` filled the fields in
+/// order, silently); every struct-valued field of the scene, and the scene
+/// itself, is read through this one function, which refuses an array in
+/// one line naming the field.
+pub(crate) fn object<'de, D, T>(d: D) -> std::result::Result<T, D::Error>
+where
+    D: Deserializer<'de>,
+    T: Deserialize<'de>,
+{
+    d.deserialize_any(ObjectVisitor(PhantomData))
+}
+
+/// [`object`] for an optional struct: `null` or absent is `None`.
+pub(crate) fn optional_object<'de, D, T>(d: D) -> std::result::Result<Option<T>, D::Error>
+where
+    D: Deserializer<'de>,
+    T: Deserialize<'de>,
+{
+    d.deserialize_any(OptionalObjectVisitor(PhantomData))
+}
+
+struct ObjectVisitor<T>(PhantomData<T>);
+
+impl<'de, T: Deserialize<'de>> Visitor<'de> for ObjectVisitor<T> {
+    type Value = T;
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("an object")
+    }
+    fn visit_map<A: MapAccess<'de>>(self, map: A) -> std::result::Result<T, A::Error> {
+        T::deserialize(de::value::MapAccessDeserializer::new(map))
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, _: A) -> std::result::Result<T, A::Error> {
+        Err(de::Error::custom(ARRAY_FOR_OBJECT))
+    }
+}
+
+struct OptionalObjectVisitor<T>(PhantomData<T>);
+
+impl<'de, T: Deserialize<'de>> Visitor<'de> for OptionalObjectVisitor<T> {
+    type Value = Option<T>;
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("an object or null")
+    }
+    fn visit_unit<E: de::Error>(self) -> std::result::Result<Option<T>, E> {
+        Ok(None)
+    }
+    fn visit_none<E: de::Error>(self) -> std::result::Result<Option<T>, E> {
+        Ok(None)
+    }
+    fn visit_map<A: MapAccess<'de>>(self, map: A) -> std::result::Result<Option<T>, A::Error> {
+        T::deserialize(de::value::MapAccessDeserializer::new(map)).map(Some)
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, _: A) -> std::result::Result<Option<T>, A::Error> {
+        Err(de::Error::custom(ARRAY_FOR_OBJECT))
+    }
+}
+
+const ARRAY_FOR_OBJECT: &str = "expected an object, found an array";
+
+/// The scene itself, read through [`object`].
+struct TopLevel(SceneSpec);
+
+impl<'de> Deserialize<'de> for TopLevel {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        object(d).map(TopLevel)
+    }
+}
+
 /// Parse scene JSON, naming the field at fault: `mode: unknown variant ...`,
 /// `volume.dims: expected 3 values, found more`.
 fn parse(text: &str) -> Result<SceneSpec> {
     let mut de = serde_json::Deserializer::from_str(text);
-    let scene: SceneSpec = serde_path_to_error::deserialize(&mut de).map_err(|e| {
+    let TopLevel(scene) = serde_path_to_error::deserialize(&mut de).map_err(|e| {
         let path = e.path().to_string();
         let inner = e.into_inner();
         let at = format!("line {} column {}", inner.line(), inner.column());

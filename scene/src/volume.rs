@@ -20,6 +20,7 @@ pub struct VolumeSpec {
     pub kind: Option<RawType>,
     pub window: Option<[f64; 2]>,
     /// Optional sub-box of the loaded volume; the scene then renders it alone.
+    #[serde(default, deserialize_with = "crate::spec::optional_object")]
     pub crop: Option<Crop>,
     /// The built-in sphere's shell: the width in voxels of its
     /// volume-sampling ramp (default [`SPHERE_SHELL`]).

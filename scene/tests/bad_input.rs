@@ -170,3 +170,58 @@ fn a_raw_file_of_the_wrong_size_is_refused_before_it_is_read() {
     std::fs::remove_dir_all(&dir).unwrap();
     assert!(e.contains("100 bytes") && e.contains("4096"), "{e}");
 }
+
+/// serde's derived structs also take a sequence: `"hardware": [1,8,8,8,5]`
+/// rendered at 1 pipeline, and a volume given as an array was read in field
+/// order. Every object of the format refuses an array, naming the field.
+#[test]
+fn arrays_are_refused_where_the_format_is_an_object() {
+    let view = r#""view": {"projection": "parallel"}"#;
+    let vol = r#""volume": {"builtin": "sphere", "dims": [16,16,16]}"#;
+    for (text, field) in [
+        (with(r#""hardware": [1,8,8,8,5]"#), "hardware"),
+        (
+            with(r#""transfer": [[[0,0]],[[0,1,1,1]],null,0.5]"#),
+            "transfer",
+        ),
+        (with(r#""shading": [true]"#), "shading"),
+        (with(r#""cube3": [12]"#), "cube3"),
+        (with(r#""quantized": [32]"#), "quantized"),
+        (
+            format!(r#"{{"volume": [null,"vol.raw",[16,16,16],"u8",null,null,null], {view}}}"#),
+            "volume",
+        ),
+        (
+            format!(r#"{{{vol}, "view": ["parallel", [0,0,0], null, null, null, null, 1]}}"#),
+            "view",
+        ),
+        (
+            MIN.replace("[16,16,16]}", r#"[16,16,16], "crop": [[0,0,0],[8,8,8]]}"#),
+            "volume.crop",
+        ),
+    ] {
+        let e = err_of(&text);
+        assert!(
+            e.contains(&format!("{field}: expected an object, found an array")),
+            "{text}: {e}"
+        );
+    }
+    let e = err_of(&format!(
+        "[{{\"builtin\": \"sphere\", \"dims\": [16,16,16]}}, {{\"projection\": \"parallel\"}}]"
+    ));
+    assert!(e.contains("expected an object, found an array"), "{e}");
+    // Objects, and a null crop, still read as before.
+    let s = Scene::from_json(
+        &with(r#""hardware": {"pipelines": 1}, "quantized": {"kernel": [0.4, 2]}"#),
+        None,
+    )
+    .unwrap();
+    assert_eq!(s.hardware.pipelines, 1);
+    let s = MIN.replace("[16,16,16]}", r#"[16,16,16], "crop": null}"#);
+    assert!(Scene::from_json(&s, None).unwrap().volume.crop.is_none());
+    let s = MIN.replace(
+        "[16,16,16]}",
+        r#"[16,16,16], "crop": {"offset": [0,0,0], "dims": [8,8,8]}}"#,
+    );
+    assert!(Scene::from_json(&s, None).unwrap().volume.crop.is_some());
+}
