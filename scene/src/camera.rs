@@ -115,9 +115,15 @@ impl Camera {
                     )));
                 }
                 // World = Rz * Ry * Rx * dataset; the camera looks down world -z.
-                let rot = DMat3::from_rotation_z(rv.z.to_radians())
-                    * DMat3::from_rotation_y(rv.y.to_radians())
-                    * DMat3::from_rotation_x(rv.x.to_radians());
+                // Each angle is reduced mod 360 in degrees first: the
+                // reduction is exact in f64, where to_radians of a large
+                // angle is not (1e17 degrees turned 275.6, not 280). The
+                // remainder keeps the sign, so every angle in (-360, 360)
+                // is taken as it is and no committed image moves.
+                let rad = |deg: f64| (deg % 360.0).to_radians();
+                let rot = DMat3::from_rotation_z(rad(rv.z))
+                    * DMat3::from_rotation_y(rad(rv.y))
+                    * DMat3::from_rotation_x(rad(rv.x));
                 let inv = rot.transpose();
                 Ok(Camera {
                     projection: Projection::Parallel,

@@ -225,3 +225,28 @@ fn arrays_are_refused_where_the_format_is_an_object() {
     );
     assert!(Scene::from_json(&s, None).unwrap().volume.crop.is_some());
 }
+
+/// `rotate_deg` is reduced mod 360 in degrees, exactly, before it becomes
+/// radians: 1e17° once rendered at 275.6°, not at 1e17 mod 360 = 280°.
+#[test]
+fn huge_angles_are_reduced_exactly() {
+    let cam = |r: &str| {
+        Scene::from_json(
+            &MIN.replace("parallel\"", &format!("parallel\", \"rotate_deg\": {r}")),
+            None,
+        )
+        .unwrap()
+        .camera()
+    };
+    for (big, small) in [
+        ("[0, 1e17, 0]", "[0, 280, 0]"),
+        ("[1e17, 0, 0]", "[280, 0, 0]"),
+        ("[0, 0, -1e17]", "[0, 0, -280]"),
+        ("[720.5, -360, 1080]", "[0.5, 0, 0]"),
+    ] {
+        let (a, b) = (cam(big), cam(small));
+        for (u, v) in [(a.right, b.right), (a.up, b.up), (a.forward, b.forward)] {
+            assert_eq!(u, v, "{big} against {small}");
+        }
+    }
+}
