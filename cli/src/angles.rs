@@ -6,7 +6,7 @@
 //! tri-linear samples in float).
 
 use crate::common::{angle_sweep, check_step, error_json, load, na_or, render_arch, Arch};
-use crate::output::{write_json, write_png_rgb8, Files};
+use crate::output::Files;
 use crate::plot::{angle_plot, Curve, PLOT_H, PLOT_W};
 use anyhow::{bail, Result};
 use plotters::style::colors::{BLUE, RED};
@@ -144,16 +144,16 @@ pub fn run(args: AnglesArgs) -> Result<()> {
     );
     if let Some(p) = &plot {
         let png = plot_rows(&rows, arch, against, &angles)?;
-        write_png_rgb8(p, PLOT_W, PLOT_H, png)?;
+        files.png_rgb8(p, PLOT_W, PLOT_H, png)?;
     }
     if let Some(j) = json_path {
         let worst = worst.map_or(json!("n/a"), |w| json!(w));
-        write_json(
+        files.json(
             &j,
             &json!({"scene": scene_path.display().to_string(), "arch": arch.name(), "against": against.name(), "rows": rows, "max_rel_euclid_pct": worst}),
         )?;
     }
-    Ok(())
+    files.commit()
 }
 
 /// The rows' errors as curves: thick for the foreground reading, thin for

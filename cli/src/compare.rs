@@ -3,7 +3,7 @@
 //! every `render --compare-reference` reports.
 
 use crate::common::{check_step, error_json, error_line, load, render_arch, Arch};
-use crate::output::{write_json, write_png, Files};
+use crate::output::Files;
 use anyhow::{bail, Context, Result};
 use reference::metrics::{compare, difference};
 use scene::volume::Ordered;
@@ -55,10 +55,10 @@ pub fn run(args: CompareArgs) -> Result<()> {
         r.seconds
     );
     if let Some(d) = &args.diff {
-        write_png(d, &difference(&img, &r.image, 8.0))?;
+        files.png(d, &difference(&img, &r.image, 8.0))?;
     }
     if let Some(j) = &args.json {
-        write_json(
+        files.json(
             j,
             &json!({
                 "scene": args.scene.display().to_string(),
@@ -69,7 +69,7 @@ pub fn run(args: CompareArgs) -> Result<()> {
             }),
         )?;
     }
-    Ok(())
+    files.commit()
 }
 
 /// The image to judge, of the scene's size `[w, h]` (checked from its

@@ -15,7 +15,7 @@
 //! widths, and their distance from the reference is their error.
 
 use crate::common::{render_arch, Arch, Rendered};
-use crate::output::{write_png, write_png_rgb8};
+use crate::output::Files;
 use anyhow::{Context, Result};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -42,6 +42,17 @@ struct Method {
 
 pub fn run() -> Result<()> {
     let scene = Scene::from_json(DEFAULT_SCENE, None).context("built-in default scene")?;
+    // Every output is checked before the work, and they land together.
+    let out = Path::new("out");
+    let mut files = Files::default();
+    for f in [
+        "default.png",
+        "default_reference.png",
+        "default_cube4l.png",
+        "default_cube3.png",
+    ] {
+        files.output("the default run's output", &out.join(f))?;
+    }
     let t = Instant::now();
     let vol = Volume::from_spec(&scene.volume, scene.hardware.voxel_bits)?;
     let volume_s = t.elapsed().as_secs_f64();
@@ -82,12 +93,12 @@ pub fn run() -> Result<()> {
         });
     }
 
-    let out = Path::new("out");
     for m in &methods {
-        write_png(&out.join(m.file), &m.out.image)?;
+        files.png(&out.join(m.file), &m.out.image)?;
     }
     let (w, h, rgb) = overview(&scene, &methods)?;
-    write_png_rgb8(&out.join("default.png"), w, h, rgb)?;
+    files.png_rgb8(&out.join("default.png"), w, h, rgb)?;
+    files.commit()?;
 
     let d = scene.volume.render_dims();
     let hw = &scene.hardware;

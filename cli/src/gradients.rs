@@ -7,7 +7,7 @@
 //! basis correction and without it (the 12 needs none), with a plot.
 
 use crate::common::{angle_sweep, load};
-use crate::output::{write_json, write_png_rgb8, Files};
+use crate::output::Files;
 use crate::plot::{angle_plot, Curve, PLOT_H, PLOT_W};
 use anyhow::{bail, Context, Result};
 use golden_model::cube3::surface::{crossings, At, ALL};
@@ -148,10 +148,10 @@ pub fn run(args: GradientsArgs) -> Result<()> {
     }
     if let Some(p) = &args.plot {
         let png = plot(&curves, angles[0], angles[angles.len() - 1]).context("drawing the plot")?;
-        write_png_rgb8(p, PLOT_W, PLOT_H, png)?;
+        files.png_rgb8(p, PLOT_W, PLOT_H, png)?;
     }
     if let Some(j) = &args.json {
-        write_json(
+        files.json(
             j,
             &json!({
                 "scene": args.scene.display().to_string(),
@@ -166,7 +166,7 @@ pub fn run(args: GradientsArgs) -> Result<()> {
             }),
         )?;
     }
-    Ok(())
+    files.commit()
 }
 
 /// The curves (mean error in degrees against angle): the corrected ones

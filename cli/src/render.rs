@@ -3,7 +3,7 @@
 //! a difference image, the first sweep's base plane and a JSON report.
 
 use crate::common::{check_step, error_json, error_line, load, render_arch, render_repeat, Arch};
-use crate::output::{write_json, write_png, Files};
+use crate::output::Files;
 use anyhow::{bail, Result};
 use reference::metrics::{compare, difference};
 use scene::volume::{Ordered, Volume};
@@ -120,20 +120,21 @@ pub fn run(args: RenderArgs) -> Result<()> {
         report["error"] = error_json(&m);
         report["reference_seconds"] = json!(rr.seconds);
         if let Some(d) = diff {
-            write_png(&d, &difference(&r.image, &rr.image, 8.0))?;
+            files.png(&d, &difference(&r.image, &rr.image, 8.0))?;
         }
     }
     if let Some(p) = base_plane {
         let (frame_img, _) = base_plane_image(&scene, &vol)?;
-        write_png(&p, &frame_img)?;
+        files.png(&p, &frame_img)?;
     }
     if let Some(o) = out {
-        write_png(&o, &r.image)?;
+        files.png(&o, &r.image)?;
     }
     if let Some(j) = json_path {
-        write_json(&j, &report)?;
+        files.json(&j, &report)?;
     }
-    Ok(())
+    // Every output lands now, or none does.
+    files.commit()
 }
 
 /// The first sweep's base plane as an image (scaled to the display range).

@@ -6,7 +6,7 @@
 //! writes the next view's registers and the table words that changed.
 
 use crate::common::{load, HwArch};
-use crate::output::{self, write_json, write_png};
+use crate::output;
 use anyhow::{bail, Context, Result};
 use clap::ValueEnum;
 use cosim::arch::Arch;
@@ -126,8 +126,10 @@ impl ForArch for Sim<'_> {
             files.output("--trace", v)?;
             files.companion("--trace's save file", &v.with_extension("gtkw"))?;
         }
-        let request = trace_request(args)?;
-        let simulated = cosim::sim::simulate_frames::<A>(
+        // The trace is written to temporary files of the set, which land
+        // with the images and the JSON (or are removed with them).
+        let request = trace_request(args, &mut files)?;
+        let run = cosim::sim::simulate_frames::<A>(
             &frames,
             build.as_ref(),
             &vol,
@@ -135,10 +137,7 @@ impl ForArch for Sim<'_> {
             request.as_ref(),
             &|v| v.to_string(),
         )
-        .map_err(err)
-        .and_then(|r| keep_trace(&request).map(|()| r));
-        drop_trace_temp(&request);
-        let run = simulated?;
+        .map_err(err)?;
         if let Some(t) = &run.traced {
             println!(
                 "trace: {} of {} signals, clocks {}..{} ({} simulation{}), {} bytes",
@@ -236,7 +235,7 @@ impl ForArch for Sim<'_> {
             mismatches += r.mismatches;
             if let Some(o) = outs.get(i) {
                 let img = A::image(scene, cam, r.bases).map_err(err)?;
-                write_png(o, &img)?;
+                files.png(o, &img)?;
             }
             if i + 1 == frames.len() {
                 if let Some(j) = &args.json {
@@ -259,13 +258,15 @@ impl ForArch for Sim<'_> {
                     {
                         d.extend(f);
                     }
-                    write_json(j, &doc)?;
+                    files.json(j, &doc)?;
                 }
             }
         }
         println!(
             "{seconds:.2} s in all ({sim_seconds:.2} s simulating {simulated} clocks, {cps:.0} clocks/s; {build_seconds:.1} s building)"
         );
+        // The outputs land even when pixels differ: they show how.
+        files.commit()?;
         if mismatches > 0 {
             bail!("{mismatches} base-plane pixels differ from the golden model");
         }
@@ -291,7 +292,10 @@ fn frame_paths(out: &Option<PathBuf>, frames: usize) -> Vec<PathBuf> {
 
 /// The trace `--trace` asks for, written to a temporary path beside it
 /// (a trace is written whole, never through a special file).
-fn trace_request(args: &SimArgs) -> Result<Option<cosim::trace::Request>> {
+fn trace_request(
+    args: &SimArgs,
+    files: &mut output::Files,
+) -> Result<Option<cosim::trace::Request>> {
     let Some(v) = &args.trace else {
         return Ok(None);
     };
@@ -323,29 +327,11 @@ fn trace_request(args: &SimArgs) -> Result<Option<cosim::trace::Request>> {
     } else {
         "vcd"
     };
-    let tmp = output::temp_for(v, ext)
+    let tmp = files
+        .temp_for(v, ext)
         .with_context(|| "--trace: a trace is written whole, with its .gtkw beside it")?;
-    crate::stop::remove_on_stop(&tmp);
-    crate::stop::remove_on_stop(&tmp.with_extension("gtkw"));
+    files.temp_at(&tmp.with_extension("gtkw"), &v.with_extension("gtkw"))?;
     req.path = tmp;
     req.lands_at = Some(v.clone());
     Ok(Some(req))
-}
-
-/// Move a finished trace and its `.gtkw` into place.
-fn keep_trace(req: &Option<cosim::trace::Request>) -> Result<()> {
-    if let Some(req) = req {
-        let v = req.lands_at.as_ref().expect("the trace's place");
-        output::keep(&req.path.with_extension("gtkw"), &v.with_extension("gtkw"))?;
-        output::keep(&req.path, v)?;
-    }
-    Ok(())
-}
-
-/// Whatever happened, no temporary trace is left behind.
-fn drop_trace_temp(req: &Option<cosim::trace::Request>) {
-    if let Some(req) = req {
-        let _ = std::fs::remove_file(&req.path);
-        let _ = std::fs::remove_file(req.path.with_extension("gtkw"));
-    }
 }

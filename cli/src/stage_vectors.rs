@@ -3,7 +3,7 @@
 //! testbench outside the kit: `testbenches/cocotb/run.py DIR` drives them
 //! with cocotb under Icarus or Verilator.
 
-use crate::output::{self, write_json, write_text};
+use crate::output::Files;
 use anyhow::{bail, Result};
 use clap::ValueEnum;
 use golden_model::cube4l::plan::Order;
@@ -83,11 +83,25 @@ pub fn run(args: StageVectorsArgs) -> Result<()> {
         args.out.join(format!("{}.v", args.stage)),
         args.out.join(format!("{}.json", args.stage)),
     );
-    let mut outs = output::Files::default();
-    outs.output("the stage's Verilog", &v)?;
-    outs.output("the stage's vectors", &j)?;
-    write_text(&v, &files.verilog)?;
-    write_json(&j, &files.vectors)?;
+    // The two files land together or not at all, and replace only the
+    // kit's own (each begins with its mark).
+    let mut outs = Files::default();
+    let advice = "move it, or write elsewhere";
+    outs.kits(
+        "the stage's Verilog",
+        &v,
+        cosim::stage_vectors::VERILOG_MARK,
+        advice,
+    )?;
+    outs.kits(
+        "the stage's vectors",
+        &j,
+        cosim::stage_vectors::JSON_MARK,
+        advice,
+    )?;
+    outs.text(&v, &files.verilog)?;
+    outs.json(&j, &files.vectors)?;
+    outs.commit()?;
     println!(
         "wrote {} and {} ({} clocks; outputs {} clocks after their inputs)",
         v.display(),

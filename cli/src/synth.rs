@@ -11,7 +11,6 @@
 //! nextpnr's, recorded in the JSON report.
 
 use crate::common::{choose_build, HwArch, Loaded};
-use crate::output::write_json;
 use anyhow::{Context, Result};
 use clap::ValueEnum;
 use cosim::arch::Arch;
@@ -87,12 +86,12 @@ impl ForArch for Synth<'_> {
         let err = |e: String| anyhow::anyhow!("synth: {e}");
         let (loaded, build) =
             choose_build::<A>("synth", args.scene.as_deref(), args.config.as_deref())?;
-        let mut files = crate::output::Files::default();
+        let mut outputs = crate::output::Files::default();
         if let (Some(path), Some(l)) = (&args.scene, &loaded) {
-            files.scene("--scene", path, &l.scene)?;
+            outputs.scene("--scene", path, &l.scene)?;
         }
         if let Some(j) = &args.json {
-            files.output("--json", j)?;
+            outputs.output("--json", j)?;
         }
         let scene = loaded.as_ref().map(Loaded::export);
         let parts = match &scene {
@@ -232,7 +231,7 @@ impl ForArch for Synth<'_> {
             _ => {}
         }
         if let Some(j) = &args.json {
-            write_json(
+            outputs.json(
                 j,
                 &json!({
                     "configuration": name,
@@ -281,6 +280,6 @@ impl ForArch for Synth<'_> {
                 }),
             )?;
         }
-        Ok(())
+        outputs.commit()
     }
 }

@@ -19,7 +19,7 @@
 //! an assumed clock, said so on the point.
 
 use crate::common::{render_repeat, Arch};
-use crate::output::{write_json, write_png_rgb8, write_text, Files};
+use crate::output::Files;
 use crate::reports::{pricing_build, Measured};
 use anyhow::{bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -503,13 +503,12 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
     let area_png = plot_area(&points)?;
     let csv = csv(&points, &front);
     let md = markdown(&points, &front, &report);
-    std::fs::create_dir_all(&args.out)
-        .with_context(|| format!("creating {}", args.out.display()))?;
-    write_json(&files[0], &report)?;
-    write_text(&files[1], &csv)?;
-    write_png_rgb8(&files[2], PLOT_W, PLOT_H, png)?;
-    write_text(&files[3], &md)?;
-    write_png_rgb8(&files[4], PLOT_W, PLOT_H, area_png)?;
+    run_files.json(&files[0], &report)?;
+    run_files.text(&files[1], &csv)?;
+    run_files.png_rgb8(&files[2], PLOT_W, PLOT_H, png)?;
+    run_files.text(&files[3], &md)?;
+    run_files.png_rgb8(&files[4], PLOT_W, PLOT_H, area_png)?;
+    run_files.commit()?;
     println!(
         "{} points, {} on the Pareto front; yardstick: reference at step {yard_step}{}; hardware points: {}",
         points.len(),

@@ -39,6 +39,13 @@ impl ForArch for Export<'_> {
         let err = |e: String| anyhow::anyhow!("verilog: {e}");
         let (loaded, build) =
             choose_build::<A>("verilog", args.scene.as_deref(), args.config.as_deref())?;
+        // The export replaces --out as a whole: no input of the run may
+        // lie in it.
+        let mut files = crate::output::Files::default();
+        if let (Some(path), Some(l)) = (&args.scene, &loaded) {
+            files.scene("--scene", path, &l.scene)?;
+        }
+        files.output_dir("--out", &args.out)?;
         let scene = loaded.as_ref().map(Loaded::export);
         let m = cosim::export::write_export::<A>(&args.out, &build, scene.as_ref()).map_err(err)?;
         let left_out: Vec<&str> = m["units_left_out"]

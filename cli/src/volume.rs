@@ -4,7 +4,7 @@
 //! voxels.
 
 use crate::common::load;
-use crate::output::{write_bytes, Files};
+use crate::output::Files;
 use anyhow::Result;
 use std::path::PathBuf;
 
@@ -31,7 +31,8 @@ pub fn run(args: VolumeArgs) -> Result<()> {
             "u16 little-endian",
         )
     };
-    write_bytes(&args.out, &bytes)?;
+    files.bytes(&args.out, &bytes)?;
+    files.commit()?;
     let [nx, ny, nz] = vol.dims;
     println!(
         "{}: {nx}x{ny}x{nz} {kind} voxels, x fastest",

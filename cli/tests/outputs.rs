@@ -199,3 +199,178 @@ fn a_save_file_the_kit_did_not_write_is_never_replaced() {
     let gtkw = std::fs::read_to_string(p.join("t.gtkw")).unwrap();
     assert!(gtkw.starts_with("[*] written by cube"), "{gtkw}");
 }
+
+/// An export replaces its `--out` folder as a whole: an input inside it
+/// (by path, through a link, or as a hard link) is refused before any work,
+/// and the input is left as it was.
+#[test]
+fn an_export_never_replaces_its_own_input() {
+    let d = setup();
+    let p = d.path();
+    std::fs::create_dir(p.join("exp")).unwrap();
+    std::fs::copy(p.join("s.json"), p.join("exp/manifest.json")).unwrap();
+    let scene = std::fs::read(p.join("s.json")).unwrap();
+    refused(
+        &cube(
+            &["verilog", "--scene", "exp/manifest.json", "--out", "exp"],
+            p,
+        ),
+        "would replace the input --scene exp/manifest.json",
+    );
+    assert_eq!(std::fs::read(p.join("exp/manifest.json")).unwrap(), scene);
+    // A hard link in the folder to a scene elsewhere.
+    std::fs::create_dir(p.join("exp2")).unwrap();
+    std::fs::hard_link(p.join("s.json"), p.join("exp2/top.v")).unwrap();
+    refused(
+        &cube(&["verilog", "--scene", "s.json", "--out", "exp2"], p),
+        "would replace the input --scene s.json",
+    );
+    assert_eq!(std::fs::read(p.join("s.json")).unwrap(), scene);
+    // The folder named through a link to it.
+    std::os::unix::fs::symlink("exp", p.join("via")).unwrap();
+    refused(
+        &cube(
+            &["verilog", "--scene", "exp/manifest.json", "--out", "via"],
+            p,
+        ),
+        "would replace the input",
+    );
+}
+
+/// `stage-vectors` replaces only the files it wrote (each begins with its
+/// mark), and writes both or neither.
+#[test]
+fn stage_vectors_never_replace_a_users_file() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    let args = ["stage-vectors", "--clocks", "20", "--out", "sv"];
+    std::fs::create_dir(p.join("sv")).unwrap();
+    std::fs::write(p.join("sv/compositor.v"), "module mine; endmodule\n").unwrap();
+    refused(&cube(&args, p), "was not written by cube");
+    assert_eq!(
+        std::fs::read_to_string(p.join("sv/compositor.v")).unwrap(),
+        "module mine; endmodule\n"
+    );
+    assert!(!p.join("sv/compositor.json").exists());
+    std::fs::remove_file(p.join("sv/compositor.v")).unwrap();
+    std::fs::write(p.join("sv/compositor.json"), "{\"mine\": 1}\n").unwrap();
+    refused(&cube(&args, p), "was not written by cube");
+    assert!(!p.join("sv/compositor.v").exists());
+    std::fs::remove_file(p.join("sv/compositor.json")).unwrap();
+    // The kit's own pair is replaced by the next run.
+    ok(&cube(&args, p));
+    ok(&cube(&args, p));
+    let v = std::fs::read_to_string(p.join("sv/compositor.v")).unwrap();
+    assert!(v.starts_with("// written by cube stage-vectors"), "{v}");
+    let j: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(p.join("sv/compositor.json")).unwrap())
+            .unwrap();
+    assert!(j["about"].as_str().unwrap().starts_with("written by cube"));
+    assert_eq!(leftovers(p), Vec::<String>::new());
+}
+
+/// Files a run left that it did not mean to: its temporary files, at any
+/// depth.
+fn leftovers(dir: &std::path::Path) -> Vec<String> {
+    let mut found = Vec::new();
+    let mut todo = vec![dir.to_path_buf()];
+    while let Some(d) = todo.pop() {
+        for e in std::fs::read_dir(&d).unwrap().flatten() {
+            let name = e.file_name().to_string_lossy().to_string();
+            if e.file_type().unwrap().is_dir() {
+                todo.push(e.path());
+            }
+            if name.starts_with(".cube-") {
+                found.push(e.path().display().to_string());
+            }
+        }
+    }
+    found
+}
+
+/// A run's outputs land together or not at all: an output that cannot be
+/// made is refused before any work, and one that fails as it is written
+/// (`/dev/full`) leaves none of the others, no temporary file and no folder
+/// the run made.
+#[test]
+fn a_failed_run_leaves_no_output_behind() {
+    let d = setup();
+    let p = d.path();
+    std::fs::write(p.join("afile"), "x").unwrap();
+    refused(
+        &cube(
+            &[
+                "render",
+                "--scene",
+                "s.json",
+                "--out",
+                "good.png",
+                "--json",
+                "afile/new.json",
+            ],
+            p,
+        ),
+        "is not a directory",
+    );
+    assert!(!p.join("good.png").exists());
+    let o = cube(
+        &[
+            "render",
+            "--scene",
+            "s.json",
+            "--out",
+            "new/deep/good.png",
+            "--json",
+            "/dev/full",
+        ],
+        p,
+    );
+    refused(&o, "/dev/full");
+    assert!(!p.join("new").exists(), "the folders made are removed");
+    assert_eq!(leftovers(p), Vec::<String>::new());
+    // sim's JSON is checked before the simulation, not after it.
+    refused(
+        &cube(
+            &[
+                "sim",
+                "--scene",
+                "s.json",
+                "--out",
+                "f.png",
+                "--json",
+                "afile/x.json",
+            ],
+            p,
+        ),
+        "is not a directory",
+    );
+    assert!(!p.join("f.png").exists());
+    // The default run, with one of its outputs a directory.
+    std::fs::create_dir_all(p.join("out/default.png")).unwrap();
+    refused(&cube(&[], p), "is a directory");
+    let mut names: Vec<String> = std::fs::read_dir(p.join("out"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().to_string())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["default.png"]);
+}
+
+/// A legal 255-byte name has room for the run's temporary file beside it;
+/// a path that ends in `/`, `.` or `..` is not a file name.
+#[test]
+fn any_legal_name_is_taken_and_a_folder_path_is_not_a_file() {
+    let d = setup();
+    let p = d.path();
+    let long = format!("{}.png", "a".repeat(251));
+    ok(&cube(&["render", "--scene", "s.json", "--out", &long], p));
+    assert!(p.join(&long).is_file());
+    for bad in ["x.png/", "sub/.", "sub/.."] {
+        refused(
+            &cube(&["render", "--scene", "s.json", "--out", bad], p),
+            "not a file name",
+        );
+    }
+    assert!(!p.join("x.png").exists());
+    assert_eq!(leftovers(p), Vec::<String>::new());
+}

@@ -161,21 +161,19 @@ fn write_dir(
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
         _ => std::path::PathBuf::from("."),
     };
-    let leaf = out
-        .file_name()
-        .ok_or_else(|| format!("{} is not a directory path", out.display()))?
-        .to_string_lossy()
-        .to_string();
+    out.file_name()
+        .ok_or_else(|| format!("{} is not a directory path", out.display()))?;
     let io = |e: std::io::Error| format!("{}: {e}", out.display());
     std::fs::create_dir_all(&parent).map_err(io)?;
-    let tmp = parent.join(format!(".{leaf}.tmp{}", std::process::id()));
+    // Short names, so that any legal name of `out` has room beside it.
+    let tmp = parent.join(format!(".cube-{}-export.tmp", std::process::id()));
     let _ = std::fs::remove_dir_all(&tmp);
     let result = (|| {
         std::fs::create_dir_all(&tmp).map_err(io)?;
         let manifest = fill(&tmp)?;
         let text = serde_json::to_string_pretty(&manifest).map_err(|e| e.to_string())? + "\n";
         std::fs::write(tmp.join("manifest.json"), text).map_err(io)?;
-        let old = parent.join(format!(".{leaf}.old{}", std::process::id()));
+        let old = parent.join(format!(".cube-{}-export.old", std::process::id()));
         if out.exists() {
             std::fs::rename(out, &old).map_err(io)?;
         }

@@ -18,6 +18,13 @@ use rust_hdl::prelude::*;
 use scene::Mode;
 use serde_json::json;
 
+/// The first line of a stage's Verilog: a file that does not begin with it
+/// is not the kit's, and `cube stage-vectors` never replaces it.
+pub const VERILOG_MARK: &str = "// written by cube stage-vectors";
+
+/// How a stage's vectors JSON begins (its first key, `about`, sorts first).
+pub const JSON_MARK: &str = "{\n  \"about\": \"written by cube stage-vectors";
+
 /// The stages that can be exported.
 pub const STAGES: &[&str] = &["compositor"];
 
@@ -71,8 +78,12 @@ pub fn compositor(mode: Mode, order: Order, bits: u32, clocks: usize, seed: u64)
     let mut uut = Compositor::new(ModeClass::of(mode), bits);
     uut.connect_all();
     StageFiles {
-        verilog: generate_verilog(&uut),
+        verilog: format!(
+            "{VERILOG_MARK}: the next run replaces this file\n{}",
+            generate_verilog(&uut)
+        ),
         vectors: json!({
+            "about": "written by cube stage-vectors: the next run replaces this file",
             "stage": "compositor",
             "paper": "Cube-4L §3.7",
             "mode": format!("{mode:?}").to_lowercase(),
