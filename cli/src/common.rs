@@ -193,6 +193,7 @@ pub fn choose_build<A: cosim::arch::Arch>(
     Ok((loaded, build))
 }
 
+#[derive(Debug)]
 pub struct Rendered {
     pub image: Image,
     pub seconds: f64,
@@ -213,6 +214,17 @@ pub fn render_arch(
     gradient: Option<u32>,
 ) -> Result<Rendered> {
     render_with(scene, ordered, arch, ref_step, gradient, &Kept::default())
+}
+
+/// Prints a warning line once per run, however many renders of the scene
+/// the subcommand makes (`tradeoff` renders one scene many times).
+fn warn_once(message: &str) {
+    static SAID: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
+    let mut said = SAID.lock().unwrap_or_else(|e| e.into_inner());
+    if !said.iter().any(|m| m == message) {
+        eprintln!("cube: warning: {message}");
+        said.push(message.to_string());
+    }
 }
 
 /// What [`render_repeat`]'s renders of one scene and volume work out once
@@ -242,12 +254,21 @@ fn render_with(
     let t = Instant::now();
     // A golden model's frame, without the copies it made.
     let without_copies = |seconds: f64| seconds - (ordered.copy_seconds().unwrap_or(0.0) - copied);
-    match arch {
+    let rendered: Result<Rendered> = match arch {
         Arch::Cube4l => {
             let (image, frame) = golden_model::cube4l::render_image(scene, ordered)?;
             let seconds = t.elapsed().as_secs_f64();
             let frame_seconds = without_copies(seconds);
             let s = frame.stats;
+            let caveat = frame.plan.caveat.map(|c| {
+                warn_once(&c.to_string());
+                json!({
+                    "message": c.to_string(),
+                    "eye_inside": c.inside,
+                    "edge_voxels": c.edge_voxels,
+                    "expected_error_percent": c.expected_error_percent,
+                })
+            });
             // The RTL's schedule: what `cube sim` counts.
             let clocks = *kept.clocks.get_or_init(|| {
                 rtl_clocks::<cosim::cube4l::Cube4l>(scene, &scene.camera(), vol.dims)
@@ -265,6 +286,7 @@ fn render_with(
                     "volume_prep_seconds": ordered.copy_seconds(),
                     "frame_seconds": frame_seconds,
                     "voxels_per_second": s.voxels as f64 / frame_seconds,
+                    "accuracy_caveat": caveat,
                 }),
             })
         }
@@ -393,7 +415,30 @@ fn render_with(
                 }),
             })
         }
+    };
+    finite(arch, rendered?)
+}
+
+/// Every render comes out through here, so no figure made from its image
+/// (an error, a plot, a table) can be NaN: a pixel that is not a finite
+/// number is an error naming it, never an image or a figure.
+fn finite(arch: Arch, r: Rendered) -> Result<Rendered> {
+    let w = r.image.width.max(1) as usize;
+    if let Some(i) = r
+        .image
+        .rgb
+        .iter()
+        .position(|p| p.iter().any(|c| !c.is_finite()))
+    {
+        bail!(
+            "{}: pixel ({}, {}) is {:?}, not a number an image holds: the scene's figures are beyond what this method computes in",
+            arch.name(),
+            i % w,
+            i / w,
+            r.image.rgb[i]
+        );
     }
+    Ok(r)
 }
 
 /// Render `repeat` times: `seconds` and every `*_seconds` detail become
@@ -494,4 +539,34 @@ pub fn error_json(m: &Option<ErrorMetrics>) -> Value {
         "max_abs": m.max_abs,
         "foreground_pixels": m.foreground_pixels,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A NaN or infinite pixel ends the run with its place, before any
+    /// figure is made from it.
+    #[test]
+    fn a_pixel_that_is_not_finite_is_an_error() {
+        let image = |bad: f64| Image {
+            width: 3,
+            height: 2,
+            rgb: (0..6)
+                .map(|i| if i == 4 { [0.5, bad, 0.0] } else { [0.5; 3] })
+                .collect(),
+        };
+        let of = |bad| Rendered {
+            image: image(bad),
+            seconds: 0.0,
+            extra: Value::Null,
+        };
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            let e = finite(Arch::QuantizedSplat, of(bad))
+                .unwrap_err()
+                .to_string();
+            assert!(e.starts_with("quantized-splat: pixel (1, 1) is"), "{e}");
+        }
+        assert!(finite(Arch::QuantizedSplat, of(0.25)).is_ok());
+    }
 }

@@ -93,6 +93,28 @@ enum Command {
 const STACK_BYTES: usize = 64 << 20;
 const MIN_STACK_BYTES: &str = "33554432";
 
+/// The renderers' worker threads recurse no deeper than any other code:
+/// they get a main thread's 8 MiB, not rust-hdl's 32 (32 workers of 32 MiB
+/// took 1 GiB of address space, and the pool could not start under a
+/// 1.5 GB `ulimit -v`).
+const WORKER_STACK_BYTES: usize = 8 << 20;
+
+/// Start the renderers' thread pool (`RAYON_NUM_THREADS` of them, or one a
+/// core), or say in one line why it cannot start.
+fn start_pool() -> anyhow::Result<()> {
+    rayon::ThreadPoolBuilder::new()
+        .stack_size(WORKER_STACK_BYTES)
+        .build_global()
+        .map_err(|e| {
+            let asked = std::env::var("RAYON_NUM_THREADS")
+                .map_or_else(|_| "one a core".to_string(), |n| format!("RAYON_NUM_THREADS={n}"));
+            anyhow::anyhow!(
+                "cannot start the worker threads ({asked}, {} MiB of stack each): {e}; set RAYON_NUM_THREADS lower, or allow more memory (ulimit -v)",
+                WORKER_STACK_BYTES >> 20
+            )
+        })
+}
+
 fn main() {
     if std::env::var_os("RUST_MIN_STACK").is_none() {
         std::env::set_var("RUST_MIN_STACK", MIN_STACK_BYTES);
@@ -135,6 +157,10 @@ fn run() {
             std::process::exit(if vcd_diff { 2 } else { 1 });
         }
     };
+    if let Err(e) = start_pool() {
+        eprintln!("cube: {e:#}");
+        std::process::exit(1);
+    }
     let r = match cli.command {
         None => default_run::run(),
         Some(Command::Render(args)) => render::run(args),

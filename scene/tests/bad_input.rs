@@ -250,3 +250,23 @@ fn huge_angles_are_reduced_exactly() {
         }
     }
 }
+
+/// A splat kernel whose `b` underflows in f32 gave NaN weights (1e-100: a
+/// black image and a NaN error) or subnormal ones (X-ray, 1e-44: 79.8 %
+/// against 16.0 %): refused, naming the field and the usable range.
+#[test]
+fn a_kernel_that_f32_cannot_hold_is_refused() {
+    for b in ["1e-100", "1e-44", "1e-38", "1e-31", "0", "-1", "11"] {
+        let e = err_of(&with(&format!(r#""quantized": {{"kernel": [{b}, 0.1]}}"#)));
+        assert!(
+            e.contains("quantized.kernel") && e.contains("[1e-30, 10]"),
+            "{b}: {e}"
+        );
+    }
+    for b in ["1e-30", "0.446", "10"] {
+        let s = with(&format!(r#""quantized": {{"kernel": [{b}, 0.1]}}"#));
+        if let Err(e) = Scene::from_json(&s, None) {
+            panic!("{b}: {e}");
+        }
+    }
+}

@@ -12,6 +12,7 @@
 //! empty cell empty, with nothing but empty cells around it in the previous
 //! slice, is skipped whole (`render_sweep`).
 
+pub mod caveat;
 pub mod cfb;
 pub mod compositor;
 pub mod frame;

@@ -9,6 +9,7 @@
 //! sweep per (major axis, direction) that some pixel's ray has; each covers
 //! the slices on the ray's side of the eye.
 
+use super::caveat::Caveat;
 use crate::fixed::{quantize, round_div};
 use glam::{DMat3, DVec3};
 use scene::{Camera, Projection, Scene};
@@ -224,6 +225,9 @@ pub struct Plan {
     pub sweeps: Vec<Sweep>,
     /// Perspective: sweep index for each `(axis, positive direction)`.
     slots: [[Option<usize>; 2]; 3],
+    /// A perspective view with a known large error (the eye next to an
+    /// edge or inside the volume), to be reported with the image.
+    pub caveat: Option<Caveat>,
 }
 
 /// The axis most parallel to `d`: the base plane of a view is the face
@@ -367,7 +371,15 @@ impl Plan {
                 }
             }
         }
-        Ok(Plan { sweeps, slots })
+        let caveat = match camera.projection {
+            Projection::Parallel => None,
+            Projection::Perspective => Caveat::of(camera.origin, dims, sweeps.len()),
+        };
+        Ok(Plan {
+            sweeps,
+            slots,
+            caveat,
+        })
     }
 
     /// The sweep that renders a ray with direction `d` (dataset space).
