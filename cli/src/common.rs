@@ -222,7 +222,7 @@ fn warn_once(message: &str) {
     static SAID: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
     let mut said = SAID.lock().unwrap_or_else(|e| e.into_inner());
     if !said.iter().any(|m| m == message) {
-        eprintln!("cube: warning: {message}");
+        eprintln!("cube: warning: {}", crate::message::one_line(message));
         said.push(message.to_string());
     }
 }

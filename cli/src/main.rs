@@ -10,6 +10,7 @@ mod common;
 mod compare;
 mod default_run;
 mod gradients;
+mod message;
 mod output;
 mod plot;
 mod render;
@@ -151,14 +152,14 @@ fn run() {
                 .collect();
             eprintln!(
                 "cube: {} (see cube --help)",
-                first.join(" ").trim_start_matches("error: ")
+                message::one_line(first.join(" ").trim_start_matches("error: "))
             );
             let vcd_diff = std::env::args().nth(1).is_some_and(|a| a == "vcd-diff");
             std::process::exit(if vcd_diff { 2 } else { 1 });
         }
     };
     if let Err(e) = start_pool() {
-        eprintln!("cube: {e:#}");
+        eprintln!("cube: {}", message::one_line(&format!("{e:#}")));
         std::process::exit(1);
     }
     let r = match cli.command {
@@ -179,7 +180,7 @@ fn run() {
         Some(Command::Scenes) => scenes::run(),
     };
     if let Err(e) = r {
-        eprintln!("cube: {e:#}");
+        eprintln!("cube: {}", message::one_line(&format!("{e:#}")));
         std::process::exit(1);
     }
 }

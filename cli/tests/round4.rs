@@ -156,3 +156,66 @@ fn the_thread_pool_starts_under_the_documented_limit_or_says_why_not() {
         "cannot start the worker threads (RAYON_NUM_THREADS=1000",
     );
 }
+
+/// A user's string echoed in an error is cut and its control characters
+/// escaped, in every message: a 5 MB builtin name, a 3 MB key, a 1 MB raw
+/// path, a 100 kB `--config`, ANSI escapes.
+#[test]
+fn echoed_strings_are_cut_and_escaped_in_every_message() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    let scene = |volume: &str| {
+        format!(
+            r#"{{"volume": {volume}, "view": {{"projection": "parallel", "rotate_deg": [30, 20, 0]}}, "image": [16, 16]}}"#
+        )
+    };
+    let cases = [
+        (
+            scene(&format!(r#"{{"builtin": "{}"}}"#, "b".repeat(5 << 20))),
+            vec![],
+        ),
+        (
+            scene(&format!(
+                r#"{{"builtin": "sphere", "{}": 1}}"#,
+                "k".repeat(3 << 20)
+            )),
+            vec![],
+        ),
+        (
+            scene(&format!(
+                r#"{{"raw": "{}/v.raw", "dims": [4, 4, 4]}}"#,
+                "d".repeat(1 << 20)
+            )),
+            vec![],
+        ),
+        (scene(r#"{"builtin": "\u001b[31mred\u001b[0m"}"#), vec![]),
+        (
+            scene(r#"{"builtin": "sphere", "dims": [8, 8, 8]}"#),
+            vec!["--config".to_string(), "c".repeat(100_000)],
+        ),
+        (
+            scene(r#"{"builtin": "sphere", "dims": [8, 8, 8]}"#),
+            vec!["--config".to_string(), "\u{1b}[2Jwiped".to_string()],
+        ),
+    ];
+    for (i, (s, extra)) in cases.iter().enumerate() {
+        std::fs::write(p.join("s.json"), s).unwrap();
+        let mut args = vec![if extra.is_empty() {
+            "render"
+        } else {
+            "verilog"
+        }];
+        if extra.is_empty() {
+            args.extend(["--scene", "s.json"]);
+        } else {
+            args.extend(["--out", "exp"]);
+            args.extend(extra.iter().map(String::as_str));
+        }
+        let o = cube(&args, p);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "case {i}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "case {i}: one line");
+        assert!(o.stderr.len() < 1500, "case {i}: {} bytes", o.stderr.len());
+        assert!(!o.stderr.contains(&0x1b), "case {i}: a raw escape: {err}");
+    }
+}
