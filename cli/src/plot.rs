@@ -1,6 +1,6 @@
 //! Curves against the view's turn, for `cube angles` (Fig. 14) and `cube
 //! gradients` (Fig. 15): lines in given colours and widths, and the
-//! paper's levels dashed, as an RGB buffer for `output::write_png_rgb8`.
+//! paper's levels dashed, as an RGB buffer for `output::Files::png_rgb8`.
 
 use anyhow::Result;
 use plotters::prelude::*;
