@@ -5,7 +5,8 @@
 //! gives the error against True3D (same rays and neighbourhood, exact
 //! tri-linear samples in float).
 
-use crate::common::{angle_sweep, check_step, error_json, load, na_or, render_arch, Arch};
+use crate::common::{angle_sweep, check_step, error_json, load, na_or, render_arch};
+use crate::methods::Arch;
 use crate::output::Files;
 use crate::plot::{angle_plot, Curve, PLOT_H, PLOT_W};
 use anyhow::{bail, Result};

@@ -9,7 +9,7 @@
 //! path's footprint tables (with the pixels per voxel `p` and the
 //! subdivisions `n`) and every image (24 bytes a pixel).
 
-use crate::common::Arch;
+use crate::methods::Arch;
 use scene::{Projection, Scene};
 
 /// Largest work accepted, in work units of about 3 ns of this machine's

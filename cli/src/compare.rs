@@ -2,7 +2,8 @@
 //! an earlier run) against the scene's float reference, with the metrics
 //! every `render --compare-reference` reports.
 
-use crate::common::{check_step, error_json, error_line, load, render_arch, Arch};
+use crate::common::{check_step, error_json, error_line, load, render_arch};
+use crate::methods::Arch;
 use crate::output::Files;
 use anyhow::{bail, Context, Result};
 use reference::metrics::{compare, difference};

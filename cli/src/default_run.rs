@@ -14,7 +14,8 @@
 //! golden models compute what the hardware computes, in its fixed-point
 //! widths, and their distance from the reference is their error.
 
-use crate::common::{render_arch, Arch, Rendered};
+use crate::common::{render_arch, Rendered};
+use crate::methods::Arch;
 use crate::output::Files;
 use anyhow::{Context, Result};
 use plotters::prelude::*;

@@ -11,6 +11,7 @@ mod compare;
 mod default_run;
 mod gradients;
 mod message;
+mod methods;
 mod output;
 mod plot;
 mod render;

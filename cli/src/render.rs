@@ -2,7 +2,8 @@
 //! reference, optionally compare it with the reference, and write the image,
 //! a difference image, the first sweep's base plane and a JSON report.
 
-use crate::common::{check_step, error_json, error_line, load, render_arch, render_repeat, Arch};
+use crate::common::{check_step, error_json, error_line, load, render_arch, render_repeat};
+use crate::methods::Arch;
 use crate::output::Files;
 use anyhow::{bail, Result};
 use reference::metrics::{compare, difference};

@@ -5,7 +5,8 @@
 //! one build (one simulation of one design): between frames the testbench
 //! writes the next view's registers and the table words that changed.
 
-use crate::common::{load, HwArch};
+use crate::common::load;
+use crate::methods::HwArch;
 use crate::output;
 use anyhow::{bail, Context, Result};
 use clap::ValueEnum;

@@ -10,7 +10,8 @@
 //! report and routed netlist stay in DIR. `--seed` and `--router` are
 //! nextpnr's, recorded in the JSON report.
 
-use crate::common::{choose_build, HwArch, Loaded};
+use crate::common::{choose_build, Loaded};
+use crate::methods::HwArch;
 use anyhow::{Context, Result};
 use clap::ValueEnum;
 use cosim::arch::Arch;

@@ -18,7 +18,8 @@
 //! multipliers and block RAMs are its area; where no report has an fmax, at
 //! an assumed clock, said so on the point.
 
-use crate::common::{render_repeat, Arch};
+use crate::common::render_repeat;
+use crate::methods::Arch;
 use crate::output::Files;
 use crate::reports::{pricing_build, Measured};
 use anyhow::{bail, Context, Result};

@@ -1,7 +1,8 @@
 //! `cube vcd-diff`: compare two VCD traces of the same design (e.g. rust-hdl
 //! against Verilator) signal by signal and cycle by cycle. Unlike the other
 //! subcommands it returns its own exit code: 0 equal, 1 different, 2 bad
-//! input.
+//! input (a bad trace, named with its line, a clock that is not 1 bit
+//! wide, a bad option).
 
 use cosim::vcd_diff::{compare_from, show as hex, Trace};
 use std::path::PathBuf;
@@ -17,8 +18,9 @@ pub struct VcdDiffArgs {
     /// How many first mismatches to print.
     #[arg(long, default_value_t = 10)]
     show: usize,
-    /// The clock whose rising edges count the cycles: a signal name (the
-    /// shallowest of that name) or a dotted path.
+    /// The clock whose rising edges count the cycles: a 1-bit signal's
+    /// name (the shallowest of that name) or its dotted path. A wider one
+    /// is refused (exit 2).
     #[arg(long, default_value = "clock")]
     clock: String,
     /// Line B's first cycle up with A's cycle N (B traced clocks N.. of the

@@ -5,7 +5,8 @@
 //! configuration renders (the refusal names why not), and the manifest
 //! lists the scene's parts and the register writes each takes.
 
-use crate::common::{choose_build, HwArch, Loaded};
+use crate::common::{choose_build, Loaded};
+use crate::methods::HwArch;
 use anyhow::Result;
 use cosim::arch::Arch;
 use cosim::archs::ForArch;

@@ -4,6 +4,18 @@
 /// The `P` every block is built and tested for.
 pub const BUILT: [usize; 4] = [1, 2, 4, 8];
 
+/// The one check of a lane count against [`BUILT`], with the one message
+/// every refusal gives.
+pub fn built(p: usize) -> Result<(), String> {
+    if BUILT.contains(&p) {
+        Ok(())
+    } else {
+        Err(format!(
+            "hardware.pipelines {p}: the RTL is built for 1, 2, 4 or 8 pipelines"
+        ))
+    }
+}
+
 /// Work for a `P` known only at run time: [`with_p`] calls `run::<P>`.
 pub trait ForP {
     type Output;
@@ -17,8 +29,6 @@ pub fn with_p<F: ForP>(p: usize, f: F) -> Result<F::Output, String> {
         2 => Ok(f.run::<2>()),
         4 => Ok(f.run::<4>()),
         8 => Ok(f.run::<8>()),
-        _ => Err(format!(
-            "hardware.pipelines {p}: the RTL is built for 1, 2, 4 or 8 pipelines"
-        )),
+        _ => built(p).map(|()| unreachable!("every built P is dispatched")),
     }
 }

@@ -6,8 +6,8 @@
 
 use rust_hdl::prelude::*;
 
-/// The host port's address bits (`golden_model::host::ADDRESS_BITS`).
-pub const ADDRESS_BITS: usize = 24;
+/// The host port's address bits, defined with the host's register map.
+pub use golden_model::host::ADDRESS_BITS;
 
 /// `N` registers at the host addresses given to [`Regs::new`].
 #[derive(LogicBlock)]

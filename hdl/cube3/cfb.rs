@@ -212,9 +212,10 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
 impl<const P: usize, const A: usize, const B: usize> BeamFetch<P, A, B> {
     /// For the views of `s`.
     pub fn new(s: &Cube3Sizes) -> Result<BeamFetch<P, A, B>, String> {
-        if s.p != P || !P.is_power_of_two() || P > 8 {
+        crate::common::lanes::built(s.p)?;
+        if s.p != P {
             return Err(format!(
-                "hardware.pipelines {} unsupported (1, 2, 4 or 8)",
+                "sizes for {} pipelines given to a beam fetch of {P}",
                 s.p
             ));
         }

@@ -89,10 +89,9 @@ impl<const P: usize> Rpc<P> {
     const P_END: usize = P + 1;
 
     pub fn new(mode: Mode, rgba_bits: u32, voxel_bits: u32) -> Rpc<P> {
-        assert!(
-            matches!(P, 1 | 2 | 4 | 8),
-            "the RPC has 1, 2, 4 or 8 leaves"
-        );
+        if let Err(e) = crate::common::lanes::built(P) {
+            panic!("the RPC's leaves: {e}");
+        }
         let reset = golden_model::cube4l::compositor::reset_value(mode, voxel_bits)[0];
         Rpc {
             clock: Default::default(),

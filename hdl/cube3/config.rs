@@ -274,9 +274,7 @@ impl Cube3Config {
         v0: i32,
         scanlines: usize,
     ) -> Result<Cube3Config, String> {
-        if !matches!(p, 1 | 2 | 4 | 8) {
-            return Err(format!("hardware.pipelines {p} unsupported (1, 2, 4 or 8)"));
-        }
+        crate::common::lanes::built(p)?;
         let widths = shader.widths;
         let perspective = matches!(view.x, Template::Perspective { .. });
         let halo = shader.needs_gradient as usize;

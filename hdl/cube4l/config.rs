@@ -216,12 +216,7 @@ impl PipelineConfig {
     /// voxels a side whose slices leave the compositing buffer a word,
     /// shading only where colour is composited, the configuration's widths.
     pub fn validate(&self) -> Result<(), String> {
-        if !matches!(self.p, 1 | 2 | 4 | 8) {
-            return Err(format!(
-                "{} pipelines (hardware.pipelines): the RTL is built for 1, 2, 4 or 8 pipelines",
-                self.p
-            ));
-        }
+        crate::common::lanes::built(self.p as usize)?;
         if !(2..=4095).contains(&self.max_dim) {
             return Err(format!(
                 "volumes of {} voxels a side: the RTL CFB counts positions in 12 bits",

@@ -206,9 +206,7 @@ fn arrays_are_refused_where_the_format_is_an_object() {
             "{text}: {e}"
         );
     }
-    let e = err_of(&format!(
-        "[{{\"builtin\": \"sphere\", \"dims\": [16,16,16]}}, {{\"projection\": \"parallel\"}}]"
-    ));
+    let e = err_of(r#"[{"builtin": "sphere", "dims": [16,16,16]}, {"projection": "parallel"}]"#);
     assert!(e.contains("expected an object, found an array"), "{e}");
     // Objects, and a null crop, still read as before.
     let s = Scene::from_json(

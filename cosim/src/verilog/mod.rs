@@ -25,8 +25,9 @@ pub fn clean_verilog(emitted: &str, units: &[LeftOut]) -> Result<String, String>
     Ok(write_once(&prune(&width_clean(emitted), units)?))
 }
 
-/// Address bits of an on-chip memory module: 2^16 voxels per module.
-pub const ON_CHIP_BITS: usize = 16;
+/// Address bits of an on-chip memory module: 2^16 voxels per module
+/// (defined with the RAM that holds them).
+pub use hdl::common::ram::ON_CHIP_BITS;
 
 /// Where the voxels live.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
