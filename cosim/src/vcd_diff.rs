@@ -30,6 +30,16 @@ pub struct Trace {
 #[derive(Debug, Clone)]
 pub struct BadTrace(pub String);
 
+impl BadTrace {
+    /// `e` of the file `path`, in one line (`wellen` puts its errors' cause
+    /// on a line of its own).
+    fn of(path: &Path, e: &dyn std::fmt::Display) -> BadTrace {
+        let e = e.to_string();
+        let e: Vec<&str> = e.lines().map(str::trim).filter(|l| !l.is_empty()).collect();
+        BadTrace(format!("{}: {}", path.display(), e.join(" ")))
+    }
+}
+
 impl std::fmt::Display for BadTrace {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(&self.0)
@@ -56,39 +66,441 @@ fn plain(name: &str) -> String {
 /// overflow the stack. Designs nest a few tens deep.
 pub const MAX_SCOPE_DEPTH: usize = 256;
 
-/// Check, before parsing, that the header's `$scope`s nest at most `max`
-/// deep (a scan of its words up to `$enddefinitions`). A file that does not
-/// open as VCD text (FST, whose reader does not recurse) is not scanned.
-fn scope_depth_within(path: &Path, max: usize) -> std::io::Result<()> {
+/// Widest variable read: `wellen` widens a short value to its variable's
+/// width, so one `b0` for a variable declared 4 294 967 295 bits wide would
+/// take 4 GB. Designs' widest buses are a few thousand bits.
+pub const MAX_VAR_BITS: u32 = 1 << 20;
+
+/// What a `$var` declares of its values, as `wellen` reads them.
+#[derive(Debug, Clone, Copy)]
+enum Kind {
+    /// A bit vector this many bits wide (1 or more).
+    Bits(u32),
+    /// An event, or a variable 0 bits wide: its values are not read.
+    Event,
+    Real,
+    Str,
+}
+
+/// A declared variable: its kind and its name, for the messages.
+struct Declared {
+    kind: Kind,
+    name: String,
+}
+
+/// The characters of a bit value (VCD's four states and VHDL's nine).
+fn is_bit(c: u8) -> bool {
+    matches!(
+        c,
+        b'0' | b'1'
+            | b'x'
+            | b'X'
+            | b'z'
+            | b'Z'
+            | b'h'
+            | b'H'
+            | b'u'
+            | b'U'
+            | b'w'
+            | b'W'
+            | b'l'
+            | b'L'
+            | b'-'
+    )
+}
+
+/// A token as text for a message, cut short.
+fn shown(t: &[u8]) -> String {
+    let s = String::from_utf8_lossy(t);
+    if s.chars().count() > 40 {
+        format!("{}…", s.chars().take(40).collect::<String>())
+    } else {
+        s.into_owned()
+    }
+}
+
+/// Where the scan is in the text.
+enum State {
+    /// Between header commands.
+    Header,
+    /// In a header command's body, up to its `$end`: the command, the
+    /// line it started on, and its words (kept for `$scope` and `$var`).
+    Command(Vec<u8>, usize, Vec<Vec<u8>>),
+    /// In the value changes.
+    Body,
+    /// A vector, real or string value read, its id next: the value and
+    /// its line.
+    Id(Vec<u8>, usize),
+    /// In a `$comment` of the value changes.
+    Comment,
+}
+
+/// The header and value changes of a VCD text, checked for what `wellen`
+/// (0.25) panics on instead of returning an error: values wider than their
+/// variable or with characters that are not bits, reals that are not
+/// numbers, a value for an undeclared id or with no id, more `$upscope`s
+/// than `$scope`s, a `$scope` with no type, a second `$date`, `$version`
+/// or `$timescale`. Also refused: scopes nested deeper than
+/// [`MAX_SCOPE_DEPTH`] and variables wider than [`MAX_VAR_BITS`]. What
+/// `wellen` refuses with an error of its own is left to it.
+struct Scan {
+    state: State,
+    depth: usize,
+    ids: HashMap<Vec<u8>, Declared>,
+    date: bool,
+    version: bool,
+    timescale: bool,
+    /// The header ended in a command `wellen` does not know (its error).
+    done: bool,
+    /// The line of `$enddefinitions`, and whether a word followed it.
+    body: Option<(usize, bool)>,
+}
+
+impl Scan {
+    fn new() -> Scan {
+        Scan {
+            state: State::Header,
+            depth: 0,
+            ids: HashMap::new(),
+            date: false,
+            version: false,
+            timescale: false,
+            done: false,
+            body: None,
+        }
+    }
+
+    /// One whitespace-separated word of the text, on `line`.
+    fn word(&mut self, mut w: &[u8], line: usize) -> Result<(), String> {
+        while !w.is_empty() && !self.done {
+            match &mut self.state {
+                State::Header => {
+                    // `wellen` reports anything but a command here.
+                    let Some(name) = w.strip_prefix(b"$") else {
+                        self.done = true;
+                        return Ok(());
+                    };
+                    match name {
+                        b"var" | b"scope" | b"upscope" | b"date" | b"version" | b"timescale"
+                        | b"comment" | b"enddefinitions" | b"attrbegin" | b"attrend" => {}
+                        _ => {
+                            self.done = true;
+                            return Ok(());
+                        }
+                    }
+                    self.state = State::Command(name.to_vec(), line, Vec::new());
+                    return Ok(());
+                }
+                State::Command(cmd, start, words) => {
+                    // The command's body ends at the first `$end`, inside a
+                    // word or not (as `wellen` reads it).
+                    let end = w.windows(4).position(|x| x == b"$end");
+                    let (part, rest) = match end {
+                        Some(i) => (&w[..i], &w[i + 4..]),
+                        None => (w, &w[w.len()..]),
+                    };
+                    if !part.is_empty()
+                        && matches!(&cmd[..], b"var" | b"scope" | b"date" | b"version")
+                    {
+                        words.push(part.to_vec());
+                    }
+                    if end.is_none() {
+                        return Ok(());
+                    }
+                    let (cmd, start, words) = (std::mem::take(cmd), *start, std::mem::take(words));
+                    self.state = State::Header;
+                    self.command(&cmd, start, &words)?;
+                    w = rest;
+                }
+                State::Body => {
+                    if let Some((_, words)) = &mut self.body {
+                        *words = true;
+                    }
+                    match w[0] {
+                        b'#' => {}
+                        c if is_bit(c) => self.value(&w[..1], &w[1..], line)?,
+                        b'b' | b'B' | b'r' | b'R' | b's' | b'S' => {
+                            self.state = State::Id(w.to_vec(), line)
+                        }
+                        _ => match w {
+                            b"$comment" => self.state = State::Comment,
+                            b"$dumpvars" | b"$end" | b"$dumpoff" | b"$dumpon" | b"$dumpall" => {}
+                            _ => {
+                                return Err(format!(
+                                    "line {line}: `{}` is not a time, a value or a command",
+                                    shown(w)
+                                ))
+                            }
+                        },
+                    }
+                    return Ok(());
+                }
+                State::Id(value, vline) => {
+                    let (value, vline) = (std::mem::take(value), *vline);
+                    self.state = State::Body;
+                    return self.value(&value, w, vline);
+                }
+                State::Comment => {
+                    if w == b"$end" {
+                        self.state = State::Body;
+                    }
+                    return Ok(());
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// A header command ended.
+    fn command(&mut self, cmd: &[u8], line: usize, words: &[Vec<u8>]) -> Result<(), String> {
+        let again = |what: &str| Err(format!("line {line}: a second ${what}"));
+        match cmd {
+            b"scope" => {
+                if words.is_empty() {
+                    return Err(format!("line {line}: a $scope with no type or name"));
+                }
+                self.depth += 1;
+                if self.depth > MAX_SCOPE_DEPTH {
+                    return Err(format!(
+                        "line {line}: scopes nest deeper than {MAX_SCOPE_DEPTH}"
+                    ));
+                }
+            }
+            b"upscope" => {
+                if self.depth == 0 {
+                    return Err(format!("line {line}: an $upscope with no $scope open"));
+                }
+                self.depth -= 1;
+            }
+            b"var" if words.len() >= 4 => {
+                // `wellen` reads any width that is a number, and refuses others.
+                let width = std::str::from_utf8(&words[1])
+                    .ok()
+                    .and_then(|s| s.parse::<u32>().ok())
+                    .ok_or_else(|| format!("line {line}: `{}` is not a width", shown(&words[1])))?;
+                if width > MAX_VAR_BITS {
+                    return Err(format!(
+                        "line {line}: a variable {width} bits wide (at most {MAX_VAR_BITS} are read)"
+                    ));
+                }
+                let kind = match &words[0][..] {
+                    b"string" => Kind::Str,
+                    b"real" | b"realtime" | b"shortreal" | b"real_parameter" => Kind::Real,
+                    b"event" => Kind::Event,
+                    _ if width == 0 => Kind::Event,
+                    _ => Kind::Bits(width),
+                };
+                let name = words[3..]
+                    .iter()
+                    .map(|n| String::from_utf8_lossy(n))
+                    .collect::<Vec<_>>()
+                    .join(" ");
+                self.ids.insert(words[2].clone(), Declared { kind, name });
+            }
+            b"date" if !words.is_empty() => {
+                if self.date {
+                    return again("date");
+                }
+                self.date = true;
+            }
+            b"version" if !words.is_empty() => {
+                if self.version {
+                    return again("version");
+                }
+                self.version = true;
+            }
+            b"timescale" => {
+                if self.timescale {
+                    return again("timescale");
+                }
+                self.timescale = true;
+            }
+            b"enddefinitions" => {
+                self.state = State::Body;
+                self.body = Some((line, false));
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// A value change: `value` (its first character says which kind) of
+    /// the variable `id`, on `line`.
+    fn value(&self, value: &[u8], id: &[u8], line: usize) -> Result<(), String> {
+        if id.is_empty() {
+            return Err(format!("line {line}: `{}` with no signal id", shown(value)));
+        }
+        let Some(var) = self.ids.get(id) else {
+            return Err(format!(
+                "line {line}: a value for `{}`, which no $var declares",
+                shown(id)
+            ));
+        };
+        let (v, name) = (shown(value), &var.name);
+        match var.kind {
+            Kind::Event => {}
+            Kind::Bits(width) => {
+                let mut bits = match value[0] {
+                    b'b' | b'B' => &value[1..],
+                    _ => value,
+                };
+                // pymtl3 writes `b0b101`; `wellen` drops the `0b`.
+                if bits.len() > 2 && bits.starts_with(b"0b") {
+                    bits = &bits[2..];
+                }
+                if let Some(&c) = bits.iter().find(|&&c| !is_bit(c)) {
+                    return Err(format!(
+                        "line {line}: `{v}` for `{name}`: `{}` is not a bit (0, 1, x, z, h, u, w, l or -)",
+                        shown(&[c])
+                    ));
+                }
+                if bits.len() > width as usize {
+                    return Err(format!(
+                        "line {line}: `{v}` is {} bits, wider than the {width}-bit `{name}`",
+                        bits.len()
+                    ));
+                }
+                if width > 1 && bits.len() < width as usize {
+                    match bits.first() {
+                        None => {
+                            return Err(format!(
+                                "line {line}: an empty value for the {width}-bit `{name}`"
+                            ))
+                        }
+                        Some(b'0' | b'1' | b'x' | b'X' | b'z' | b'Z') => {}
+                        Some(&c) => {
+                            return Err(format!(
+                                "line {line}: `{v}` is shorter than the {width}-bit `{name}` and `{}` does not extend (0, 1, x or z do)",
+                                shown(&[c])
+                            ))
+                        }
+                    }
+                }
+            }
+            Kind::Real => {
+                let number = match value[0] {
+                    b'r' | b'R' => std::str::from_utf8(&value[1..]).ok(),
+                    _ => {
+                        return Err(format!(
+                        "line {line}: `{v}` for the real `{name}` (a real value is r and a number)"
+                    ))
+                    }
+                };
+                if number.and_then(|n| n.parse::<f64>().ok()).is_none() {
+                    return Err(format!(
+                        "line {line}: `{v}` for the real `{name}`: not a number"
+                    ));
+                }
+            }
+            Kind::Str => {
+                if !matches!(value[0], b's' | b'S') {
+                    return Err(format!(
+                        "line {line}: `{v}` for the string `{name}` (a string value starts with s)"
+                    ));
+                }
+                if std::str::from_utf8(value).is_err() {
+                    return Err(format!(
+                        "line {line}: a string value for `{name}` that is not UTF-8"
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The end of the text.
+    fn end(&self) -> Result<(), String> {
+        match &self.state {
+            State::Id(value, line) => {
+                Err(format!("line {line}: `{}` with no signal id", shown(value)))
+            }
+            // `wellen` takes one byte off an empty body's length (a panic
+            // when it checks for overflow, as the tests' profile does).
+            State::Body => match self.body {
+                Some((line, false)) => Err(format!(
+                    "line {line}: the trace ends at $enddefinitions, with no value changes"
+                )),
+                _ => Ok(()),
+            },
+            _ => Ok(()),
+        }
+    }
+}
+
+/// Check a VCD text with [`Scan`] before `wellen` reads it. A file that
+/// does not open as VCD text (FST, read by a reader of its own) is not
+/// scanned.
+fn check_vcd_text(path: &Path) -> Result<(), String> {
     use std::io::BufRead;
-    let mut f = std::io::BufReader::new(std::fs::File::open(path)?);
+    let io = |e: std::io::Error| e.to_string();
+    let mut f = std::io::BufReader::with_capacity(1 << 16, std::fs::File::open(path).map_err(io)?);
     let text = f
-        .fill_buf()?
+        .fill_buf()
+        .map_err(io)?
         .iter()
         .find(|b| !b.is_ascii_whitespace())
         .is_some_and(|&b| b == b'$');
     if !text {
         return Ok(());
     }
-    let mut depth = 0usize;
-    for line in f.split(b'\n') {
-        for word in line?.split(|b| b.is_ascii_whitespace()) {
-            match word {
-                b"$scope" => {
-                    depth += 1;
-                    if depth > max {
-                        return Err(std::io::Error::other(format!(
-                            "scopes nest deeper than {max}"
-                        )));
-                    }
-                }
-                b"$upscope" => depth = depth.saturating_sub(1),
-                b"$enddefinitions" => return Ok(()),
-                _ => {}
-            }
+    let mut scan = Scan::new();
+    let mut buf = Vec::new();
+    let mut line = 0usize;
+    loop {
+        buf.clear();
+        if f.read_until(b'\n', &mut buf).map_err(io)? == 0 {
+            break;
+        }
+        line += 1;
+        for w in buf
+            .split(|b| b.is_ascii_whitespace())
+            .filter(|w| !w.is_empty())
+        {
+            scan.word(w, line)?;
+        }
+        if scan.done {
+            return Ok(());
         }
     }
-    Ok(())
+    scan.end()
+}
+
+thread_local! {
+    /// This thread is reading a trace under [`quietly`]: a panic of the
+    /// parser is caught and reported as a bad trace, not printed.
+    static QUIET: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Run `f`, catching a panic (the trace readers' on input they did not
+/// expect) as its message, in one line, without printing it: the panic
+/// hook is wrapped, once, to stay silent on a thread inside this call and
+/// to print as before everywhere else.
+fn quietly<T>(f: impl FnOnce() -> T) -> Result<T, String> {
+    static HOOK: std::sync::Once = std::sync::Once::new();
+    HOOK.call_once(|| {
+        let previous = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            if !QUIET.with(|q| q.get()) {
+                previous(info)
+            }
+        }));
+    });
+    let was = QUIET.with(|q| q.replace(true));
+    let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
+    QUIET.with(|q| q.set(was));
+    r.map_err(|payload| {
+        let msg = payload
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "no message".into());
+        let msg = msg.lines().next().unwrap_or("").trim();
+        if msg.chars().count() > 160 {
+            format!("{}…", msg.chars().take(160).collect::<String>())
+        } else {
+            msg.to_string()
+        }
+    })
 }
 
 impl Trace {
@@ -97,15 +509,29 @@ impl Trace {
         Trace::load_with_clock(path, "clock")
     }
 
-    /// Load a trace whose cycles are counted on `clock`: a signal's name
-    /// (the shallowest of that name is taken) or its whole dotted path.
+    /// Load a trace whose cycles are counted on `clock`: a 1-bit signal's
+    /// name (the shallowest of that name is taken) or its whole dotted path.
+    ///
+    /// A VCD text is checked first ([`Scan`]: what the parser would panic
+    /// on is refused naming its line); a panic of the parser on what the
+    /// check let through is caught, silently, and refused as a bad trace.
     pub fn load_with_clock(path: &Path, clock: &str) -> Result<Trace, BadTrace> {
-        let bad = |e: &dyn std::fmt::Display| BadTrace(format!("{}: {e}", path.display()));
+        let bad = |e: &dyn std::fmt::Display| BadTrace::of(path, e);
         // Refuse FIFOs and devices before opening: one with no writer would block.
         if !std::fs::metadata(path).map_err(|e| bad(&e))?.is_file() {
             return Err(bad(&"not a regular file"));
         }
-        scope_depth_within(path, MAX_SCOPE_DEPTH).map_err(|e| bad(&e))?;
+        check_vcd_text(path).map_err(|e| bad(&e))?;
+        quietly(|| Trace::read(path, clock)).unwrap_or_else(|panic| {
+            Err(bad(&format!(
+                "unreadable trace (the trace reader failed: {panic})"
+            )))
+        })
+    }
+
+    /// [`Trace::load_with_clock`] after its checks.
+    fn read(path: &Path, clock: &str) -> Result<Trace, BadTrace> {
+        let bad = |e: &dyn std::fmt::Display| BadTrace::of(path, e);
         let mut wave = wellen::stream::read_from_file(path, &wellen::LoadOptions::default())
             .map_err(|e| bad(&e))?;
         let h = wave.hierarchy();
@@ -123,16 +549,34 @@ impl Trace {
             })
             .collect();
         // The clock: the shallowest variable of that name, or that path.
-        let clock = names
+        let (clock_at, _) = names
             .iter()
-            .filter(|(n, _)| n.last().is_some_and(|l| l == clock) || n.join(".") == clock)
-            .min_by_key(|(n, _)| n.len())
-            .map(|(_, c)| *c)
+            .enumerate()
+            .filter(|(_, (n, _))| n.last().is_some_and(|l| l == clock) || n.join(".") == clock)
+            .min_by_key(|(_, (n, _))| n.len())
             .ok_or_else(|| {
                 bad(&format!(
                     "no `{clock}` signal (name the clock with --clock)"
                 ))
             })?;
+        // A 1-bit signal: a bus's value is never "1" after "0" as a bit
+        // string, so it would count no cycle (or its low bit's, silently).
+        let var = &h[h.all_vars().nth(clock_at).expect("a variable per name")];
+        match var.signal_encoding(h) {
+            wellen::SignalEncoding::BitVector(1) => {}
+            wellen::SignalEncoding::BitVector(w) => {
+                return Err(bad(&format!(
+                    "the clock `{clock}` is {w} bits wide; the clock must be a 1-bit signal (name it with --clock)"
+                )))
+            }
+            wellen::SignalEncoding::Real | wellen::SignalEncoding::String => {
+                return Err(bad(&format!(
+                    "the clock `{clock}` is a {}, not a 1-bit signal (name the clock with --clock)",
+                    if var.is_real(h) { "real" } else { "string" }
+                )))
+            }
+        }
+        let clock = names[clock_at].1;
         // The value of each signal now, and the signals changed since the
         // last sample: a sample touches only those.
         let slots = names.iter().map(|(_, c)| c + 1).max().unwrap_or(0);
@@ -346,4 +790,137 @@ pub fn compare_from(
         cycles_b: b.cycles,
         mismatches,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A header with a 1-bit clock `!` and an 8-bit `ctl` (`#`), then `body`.
+    fn vcd(body: &str) -> String {
+        format!(
+            "$timescale 1ns $end\n$scope module uut $end\n$var wire 1 ! clock $end\n$var wire 8 # ctl $end\n$upscope $end\n$enddefinitions $end\n#0\n0!\nb0 #\n#5\n1!\n{body}\n#10\n0!\n"
+        )
+    }
+
+    fn load(text: &str, clock: &str) -> Result<Trace, String> {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("t.vcd");
+        std::fs::write(&path, text).unwrap();
+        Trace::load_with_clock(&path, clock).map_err(|e| e.0)
+    }
+
+    /// Refused in one line naming the file and `line`, holding `needle`.
+    fn refused(text: &str, line: usize, needle: &str) {
+        let e = load(text, "clock").unwrap_err();
+        assert!(!e.contains('\n'), "one line: {e}");
+        assert!(e.contains("t.vcd: "), "the file: {e}");
+        assert!(e.contains(&format!("line {line}:")), "line {line}: {e}");
+        assert!(e.contains(needle), "'{needle}' not in: {e}");
+    }
+
+    #[test]
+    fn what_wellen_panics_on_is_refused_naming_the_line() {
+        load(&vcd("b1 #"), "clock").unwrap();
+        load(&vcd("b11111111 #"), "clock").unwrap();
+        load(&vcd("bx #\nbz1 #\nb0b101 #\n1#"), "clock").unwrap();
+        refused(
+            &vcd("b111111111 #"),
+            12,
+            "9 bits, wider than the 8-bit `ctl`",
+        );
+        refused(&vcd("b12 #"), 12, "`2` is not a bit");
+        refused(&vcd("b1q #"), 12, "`q` is not a bit");
+        refused(&vcd("bh1 #"), 12, "does not extend");
+        refused(&vcd("b #"), 12, "an empty value");
+        refused(&vcd("r1.5 #"), 12, "`r` is not a bit");
+        refused(&vcd("b1q !"), 12, "`q` is not a bit");
+        refused(&vcd("b10 !"), 12, "wider than the 1-bit `clock`");
+        refused(&vcd("1%"), 12, "no $var declares");
+        refused(&format!("{}b1", vcd("")), 15, "with no signal id");
+        refused(&vcd("1"), 12, "with no signal id");
+        refused(&vcd("q#"), 12, "not a time, a value or a command");
+        let up = vcd("").replace(
+            "$upscope $end\n",
+            "$upscope $end\n$upscope $end\n$upscope $end\n",
+        );
+        refused(&up, 6, "an $upscope with no $scope open");
+        let up = vcd("").replace(
+            "$upscope $end\n",
+            "$upscope $end\n$upscope $end\n$var wire 1 $ q $end\n",
+        );
+        refused(&up, 6, "an $upscope with no $scope open");
+        refused(
+            &vcd("").replace("module uut", ""),
+            2,
+            "a $scope with no type",
+        );
+        refused(
+            &format!("$date a $end\n$date b $end\n{}", vcd("")),
+            2,
+            "a second $date",
+        );
+        refused(
+            &format!("$version a $end\n$version b $end\n{}", vcd("")),
+            2,
+            "a second $version",
+        );
+        refused(
+            &format!("$timescale 1ps $end\n{}", vcd("")),
+            2,
+            "a second $timescale",
+        );
+        refused(
+            &vcd("").replace("wire 8 #", "wire 4294967295 #"),
+            4,
+            "4294967295 bits wide",
+        );
+        let real =
+            vcd("r1.5 %\nr1e3 %\nrnan %").replace("$upscope", "$var real 64 % f $end\n$upscope");
+        load(&real, "clock").unwrap();
+        refused(&real.replace("rnan", "rx"), 15, "not a number");
+        refused(&real.replace("rnan %", "b1 %"), 15, "for the real `f`");
+        refused(&real.replace("rnan %", "1%"), 15, "for the real `f`");
+        let string = vcd("shello %").replace("$upscope", "$var string 1 % s $end\n$upscope");
+        load(&string, "clock").unwrap();
+        refused(&string.replace("shello", "b1"), 13, "for the string `s`");
+        // A `$end` inside a word ends its command, as wellen reads it; a
+        // comment's words are not read.
+        refused(
+            "$scope module m $end $var wire 1 ! clock $end $upscope $end $enddefinitions $end",
+            1,
+            "no value changes",
+        );
+        load(
+            &vcd("$comment b12 # $end").replace("clock $end", "clock$end"),
+            "clock",
+        )
+        .unwrap();
+    }
+
+    #[test]
+    fn the_clock_must_be_one_bit_wide() {
+        let e = load(&vcd("b1 #"), "ctl").unwrap_err();
+        assert!(
+            e.contains("`ctl` is 8 bits wide") && e.contains("1-bit"),
+            "{e}"
+        );
+        assert!(!e.contains('\n'), "{e}");
+        let real = vcd("r1.5 %").replace("$upscope", "$var real 64 % f $end\n$upscope");
+        let e = load(&real, "f").unwrap_err();
+        assert!(e.contains("`f` is a real"), "{e}");
+    }
+
+    #[test]
+    fn a_panic_of_the_reader_is_caught_silently() {
+        let r = quietly(|| -> u32 { panic!("deep\ninside") });
+        assert_eq!(r.unwrap_err(), "deep");
+        assert_eq!(quietly(|| 7).unwrap(), 7);
+        // An `$attrbegin` naming an enum table never declared: the scan
+        // leaves attributes to wellen, which indexes a map with it.
+        let text = vcd("").replace("$var wire 8", "$attrbegin misc 07 \"\" 5 $end\n$var wire 8");
+        let e = load(&text, "clock").unwrap_err();
+        assert!(e.contains("the trace reader failed"), "{e}");
+        assert!(!e.contains('\n'), "{e}");
+    }
 }
