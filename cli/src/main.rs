@@ -124,15 +124,53 @@ fn main() {
     // Signals are blocked here, before any thread starts, so that every
     // thread inherits the mask and only the watcher takes them.
     stop::watch();
-    let worker = std::thread::Builder::new()
+    on_spawn_failure();
+    let worker = match std::thread::Builder::new()
         .name("cube".into())
         .stack_size(STACK_BYTES)
         .spawn(run)
-        .expect("start the main thread");
+    {
+        Ok(w) => w,
+        Err(e) => no_thread(&format!(
+            "cannot start the main thread ({} MiB of stack): {e}",
+            STACK_BYTES >> 20
+        )),
+    };
     // A panic has printed its message on the worker; exit as Rust does.
     if worker.join().is_err() {
         std::process::exit(101);
     }
+}
+
+/// A thread that cannot start (under `ulimit -v`, rust-hdl's simulation
+/// threads take `RUST_MIN_STACK` each, and std's `spawn` panics) ends the
+/// run in one line, with its tools stopped and its temporary work removed.
+fn on_spawn_failure() {
+    let default = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        let p = info.payload();
+        let msg = p
+            .downcast_ref::<String>()
+            .map(String::as_str)
+            .or_else(|| p.downcast_ref::<&str>().copied())
+            .unwrap_or("");
+        if msg.starts_with("failed to spawn thread") {
+            no_thread(&format!("cannot start a thread: {msg}"));
+        }
+        default(info)
+    }));
+}
+
+/// Say why a thread could not start, clean up, and exit 1.
+fn no_thread(why: &str) -> ! {
+    eprintln!(
+        "cube: {}",
+        message::one_line(&format!(
+            "{why}; allow more memory (ulimit -v), or set RAYON_NUM_THREADS lower"
+        ))
+    );
+    stop::clean_up();
+    std::process::exit(1)
 }
 
 fn run() {

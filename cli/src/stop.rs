@@ -34,6 +34,36 @@ fn signals() -> libc::sigset_t {
     }
 }
 
+/// The working folders this process made under the temporary directory:
+/// the simulation harnesses' (`cube-harness-PID-N`) and the traces'
+/// (`cube-trace-PID-N`), which cosim makes and removes itself when a run
+/// ends, but not when the run is stopped.
+fn own_work() -> Vec<PathBuf> {
+    let tag = format!("-{}-", std::process::id());
+    let Ok(entries) = std::fs::read_dir(std::env::temp_dir()) else {
+        return Vec::new();
+    };
+    entries
+        .flatten()
+        .filter(|e| {
+            let name = e.file_name().to_string_lossy().to_string();
+            name.starts_with("cube-") && name.contains(&tag)
+        })
+        .map(|e| e.path())
+        .collect()
+}
+
+/// Stop the tools the run started and remove its temporary work: on a
+/// stop signal, and on a run that cannot go on (a thread that cannot
+/// start).
+pub fn clean_up() {
+    cosim::tool::stop_running();
+    let paths = TEMPORARY.lock().unwrap_or_else(|e| e.into_inner()).clone();
+    for p in paths.iter().rev().chain(&own_work()) {
+        let _ = std::fs::remove_dir_all(p).or_else(|_| std::fs::remove_file(p));
+    }
+}
+
 /// Start watching for the stop signals. Call first in `main`.
 pub fn watch() {
     let set = signals();
@@ -47,11 +77,7 @@ pub fn watch() {
         if unsafe { libc::sigwait(&set, &mut sig) } != 0 {
             return;
         }
-        cosim::tool::stop_running();
-        let paths = TEMPORARY.lock().unwrap_or_else(|e| e.into_inner()).clone();
-        for p in paths.iter().rev() {
-            let _ = std::fs::remove_dir_all(p).or_else(|_| std::fs::remove_file(p));
-        }
+        clean_up();
         eprintln!("cube: stopped by signal {sig}; temporary work removed");
         std::process::exit(128 + sig);
     });

@@ -219,3 +219,15 @@ fn echoed_strings_are_cut_and_escaped_in_every_message() {
         assert!(!o.stderr.contains(&0x1b), "case {i}: a raw escape: {err}");
     }
 }
+
+/// rust-hdl's simulation threads take `RUST_MIN_STACK` each, and std's
+/// `spawn` panicked where one could not start: now one line, exit 1.
+#[test]
+fn a_simulation_thread_that_cannot_start_is_one_line() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    let s = r#"{"volume":{"builtin":"sphere","dims":[12,12,12]},"view":{"projection":"parallel","rotate_deg":[20,30,0]},"image":[16,16]}"#;
+    std::fs::write(p.join("s.json"), s).unwrap();
+    let o = cube_limited(&["sim", "--scene", "s.json"], p, "32", 1_500_000_000);
+    refused(&o, "cannot start a thread");
+}

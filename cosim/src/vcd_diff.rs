@@ -154,6 +154,8 @@ struct Scan {
     done: bool,
     /// The line of `$enddefinitions`, and whether a word followed it.
     body: Option<(usize, bool)>,
+    /// The last time step of the body.
+    last_time: Option<u64>,
 }
 
 impl Scan {
@@ -167,6 +169,7 @@ impl Scan {
             timescale: false,
             done: false,
             body: None,
+            last_time: None,
         }
     }
 
@@ -217,7 +220,7 @@ impl Scan {
                         *words = true;
                     }
                     match w[0] {
-                        b'#' => {}
+                        b'#' => self.time(&w[1..], line)?,
                         c if is_bit(c) => self.value(&w[..1], &w[1..], line)?,
                         b'b' | b'B' | b'r' | b'R' | b's' | b'S' => {
                             self.state = State::Id(w.to_vec(), line)
@@ -248,6 +251,23 @@ impl Scan {
                 }
             }
         }
+        Ok(())
+    }
+
+    /// A time step `#t`: a whole number, never before the last one
+    /// (`wellen` warns on stdout and drops what follows a step back, so two
+    /// traces that differ there would read as equal).
+    fn time(&mut self, t: &[u8], line: usize) -> Result<(), String> {
+        let Some(t) = std::str::from_utf8(t)
+            .ok()
+            .and_then(|t| t.parse::<u64>().ok())
+        else {
+            return Err(format!("line {line}: `#{}` is not a time", shown(t)));
+        };
+        if let Some(last) = self.last_time.filter(|&last| t < last) {
+            return Err(format!("line {line}: time {t} comes after time {last}"));
+        }
+        self.last_time = Some(t);
         Ok(())
     }
 
