@@ -23,7 +23,7 @@ fn an_eye_near_a_volume_edge_is_flagged_with_its_expected_error() {
     let p = d.path();
     for (eye, inside, range) in [
         ("[31, 31, 31]", true, [0.4, 58.0]),
-        ("[33, 33, 33]", false, [15.0, 33.0]),
+        ("[33, 33, 33]", false, [8.0, 33.0]),
     ] {
         std::fs::write(p.join("s.json"), near_edge(eye)).unwrap();
         let o = cube(
