@@ -280,6 +280,10 @@ impl HwPrice {
     }
 }
 
+/// How a tradeoff.json the command wrote begins (its first key, `about`,
+/// sorts first).
+const MARK: &str = "{\n  \"about\": \"written by cube tradeoff";
+
 pub fn run(args: TradeoffArgs) -> Result<()> {
     if !(1..=100).contains(&args.repeat) {
         bail!("--repeat {} must lie in 1..=100", args.repeat);
@@ -330,6 +334,18 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
     run_files.scene("--scene", &args.scene, &scene)?;
     for f in &files {
         run_files.output("--out", f)?;
+    }
+    // The five files are replaced only where a run of this command wrote
+    // them: a user's tradeoff.md in --out is never lost.
+    let ours = std::fs::read(&files[0]).is_ok_and(|b| b.starts_with(MARK.as_bytes()));
+    if !ours {
+        if let Some(f) = files.iter().find(|f| std::fs::symlink_metadata(f).is_ok()) {
+            bail!(
+                "--out {}: {} exists and no cube tradeoff run wrote it (the folder has no tradeoff.json of one): move it, or write elsewhere",
+                args.out.display(),
+                f.display()
+            );
+        }
     }
 
     // Which methods apply, and their grids.
@@ -490,6 +506,7 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
         "converged": converged.map(|(s, h, d)| json!({"step": s, "half": h, "difference_pct": d})),
     });
     let report = json!({
+        "about": "written by cube tradeoff: the next run into this folder replaces its five files",
         "scene": args.scene.display().to_string(),
         "repeat": args.repeat,
         "threads": rayon::current_num_threads(),

@@ -46,7 +46,10 @@ pub fn run(args: VcdDiffArgs) -> i32 {
     let c = match loaded.and_then(|(ta, tb)| compare_from(&ta, a_from, &tb, signals.as_deref())) {
         Ok(c) => c,
         Err(e) => {
-            eprintln!("cube: vcd-diff: {}", crate::message::one_line(&e.to_string()));
+            eprintln!(
+                "cube: vcd-diff: {}",
+                crate::message::one_line(&e.to_string())
+            );
             return 2;
         }
     };

@@ -374,3 +374,22 @@ fn any_legal_name_is_taken_and_a_folder_path_is_not_a_file() {
     assert!(!p.join("x.png").exists());
     assert_eq!(leftovers(p), Vec::<String>::new());
 }
+
+/// `tradeoff --out DIR` replaces its five files only where a tradeoff run
+/// wrote them (its tradeoff.json begins with the mark): a user's
+/// `tradeoff.md` there is never lost.
+#[test]
+fn tradeoff_never_replaces_a_users_file_in_its_folder() {
+    let d = setup();
+    let p = d.path();
+    std::fs::create_dir(p.join("tr")).unwrap();
+    std::fs::write(p.join("tr/tradeoff.md"), "my notes\n").unwrap();
+    refused(
+        &cube(&["tradeoff", "--scene", "s.json", "--out", "tr"], p),
+        "no cube tradeoff run wrote it",
+    );
+    assert_eq!(
+        std::fs::read_to_string(p.join("tr/tradeoff.md")).unwrap(),
+        "my notes\n"
+    );
+}
