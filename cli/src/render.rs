@@ -147,7 +147,7 @@ fn base_plane_image(scene: &Scene, vol: &Volume) -> Result<(Image, usize)> {
     let hw = scene.hardware;
     let mut img = Image::black(b.width as u32, b.height as u32);
     for (o, p) in img.rgb.iter_mut().zip(&b.pixels) {
-        *o = golden_model::warp::to_rgb(
+        *o = golden_model::common::warp::to_rgb(
             scene.mode,
             p.map(|c| c as f64),
             hw.rgba_bits,

@@ -6,7 +6,7 @@
 use crate::output::Files;
 use anyhow::{bail, Result};
 use clap::ValueEnum;
-use golden_model::cube4l::plan::Order;
+use golden_model::common::plan::Order;
 use scene::Mode;
 use std::path::PathBuf;
 

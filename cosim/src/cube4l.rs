@@ -9,10 +9,10 @@ use crate::arch::{Arch, BasePixels, BufferMemory, ClockTerm};
 use crate::gtkw::Wave;
 use crate::harness::{Group, Record, Stop};
 use crate::verilog::{clean_verilog, Layout, LeftOut, ON_CHIP_BITS as A};
+use golden_model::common::shader::Shader as GoldenShader;
 use golden_model::cube4l::cfb::SkewedMemory;
 use golden_model::cube4l::plan::{Face, Plan, Rays, Sweep};
 use golden_model::cube4l::regs::ViewRegs;
-use golden_model::cube4l::shader::Shader as GoldenShader;
 use golden_model::cube4l::{render_sweep, BasePlane, Frame, Stats};
 use golden_model::host::Write;
 use hdl::common::lanes::{with_p, ForP};
@@ -459,7 +459,7 @@ impl Arch for Cube4l {
             stats: Stats::default(),
         };
         let hw = scene.hardware;
-        Ok(golden_model::warp::warp(
+        Ok(golden_model::cube4l::warp::warp(
             &frame,
             camera,
             scene.mode,

@@ -8,9 +8,9 @@
 //! operator and the MIP/MinIP/X-ray accumulations): `LATENCY` clocks after
 //! the operands of clock `t` go in, `composite`'s answer for them comes out.
 
-use golden_model::cube4l::compositor::composite;
-use golden_model::cube4l::plan::Order;
-use golden_model::cube4l::shader::Sample;
+use golden_model::common::compositor::composite;
+use golden_model::common::plan::Order;
+use golden_model::common::shader::Sample;
 use golden_model::fixed::max_of;
 use hdl::common::mode_class::ModeClass;
 use hdl::cube4l::compositor::{Compositor, LATENCY};

@@ -11,17 +11,19 @@
 //!   Caubet): voxel projection by quantized positions and quantized
 //!   splatting, in floating point, with no hardware twin.
 //!
-//! What the architectures share: [`fixed`] (every rounding, truncation and
+//! What the architectures share: [`common`] (the stages both use: planning
+//! helpers, the gradient helpers, the one shader, the compositing unit and
+//! the warp's shared parts), [`fixed`] (every rounding, truncation and
 //! saturation, named), [`lut`] (the classification and shading LUTs filled
-//! from the scene's transfer function and lighting), [`host`] (the words the
-//! host writes into the hardware's registers and tables between frames) and
-//! [`warp`] (base plane to final image). Scenes, volumes, the camera and the float formulas come
-//! from the `scene` crate.
+//! from the scene's transfer function and lighting) and [`host`] (the words
+//! the host writes into the hardware's registers and tables between
+//! frames). Scenes, volumes, the camera and the float formulas come from the
+//! `scene` crate.
 
+pub mod common;
 pub mod cube3;
 pub mod cube4l;
 pub mod fixed;
 pub mod host;
 pub mod lut;
 pub mod quantized;
-pub mod warp;

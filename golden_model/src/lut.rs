@@ -227,7 +227,7 @@ pub struct Lighting {
     pub diffuse: Vec<u32>,
     pub specular: Vec<u32>,
     /// Bits per signed component of the quantized normal
-    /// (`hardware.normal_bits`): [`quantize_normal`](crate::cube4l::gradient::quantize_normal)'s
+    /// (`hardware.normal_bits`): [`quantize_normal`](crate::common::gradient::quantize_normal)'s
     /// width and the dot products' saturation.
     pub normal_bits: u32,
     /// [`Lighting::reflect`] of each normal once computed: a software memo

@@ -1,9 +1,10 @@
-//! The shader and classifier (`cube4l::shader`) on hand-built tables, where
-//! every output can be worked out by hand, and on tables built from scenes.
+//! The shader and classifier (`common::shader`) at Cube-4L's voxels, on
+//! hand-built tables, where every output can be worked out by hand, and on
+//! tables built from scenes.
 
-use golden_model::cube4l::gradient::quantize_normal;
+use golden_model::common::gradient::quantize_normal;
+use golden_model::common::shader::{Sample, Shader};
 use golden_model::cube4l::plan::{Control, Face, Plan};
-use golden_model::cube4l::shader::{Sample, Shader};
 use golden_model::lut::{ColourLut, Lighting, OpacityLut};
 use scene::{Mode, Scene};
 
@@ -34,6 +35,15 @@ fn invalid() -> Control {
     }
 }
 
+/// The shader at a voxel with control bits `c`.
+fn sample(s: &Shader, v: u32, c: &Control, gradient: impl FnOnce() -> [i32; 3]) -> Sample {
+    s.sample(v, c.invalid, c.edge, gradient)
+}
+
+fn transparent(s: &Shader, v: u32, c: &Control) -> bool {
+    s.transparent(v, c.invalid, c.edge)
+}
+
 /// A gradient that must not be asked for.
 fn no_gradient() -> [i32; 3] {
     panic!("gradient computed")
@@ -48,6 +58,8 @@ fn shader(mode: Mode) -> Shader {
         mode,
         rgba_bits: 8,
         voxel_bits: 8,
+        sample_frac: 0,
+        gradient_bits: 9,
         colour: mode.uses_colour().then(|| ColourLut {
             shift: 0,
             table: (0..256).map(|v| [v, 255 - v, 40]).collect(),
@@ -85,7 +97,7 @@ fn lit_shader(mode: Mode) -> Shader {
 }
 
 fn value(s: &Shader, v: u32, c: &Control, g: [i32; 3]) -> [u32; 4] {
-    let out = s.sample(v, c, || g);
+    let out = sample(s, v, c, || g);
     assert!(out.valid);
     out.value
 }
@@ -96,29 +108,29 @@ fn transparency_before_the_gradient() {
         let s = shader(mode);
         for c in [inside(), edge(), invalid()] {
             for v in [0, 5, 200] {
-                assert!(!s.transparent(v, &c), "{mode:?} {v} {c:?}");
+                assert!(!transparent(&s, v, &c), "{mode:?} {v} {c:?}");
             }
         }
     }
     for mode in [Mode::Composite, Mode::FirstOpaque, Mode::Xray] {
         let s = shader(mode);
         // Zero opacity row.
-        assert!(s.transparent(5, &inside()));
-        assert!(s.transparent(0, &inside()));
-        assert!(!s.transparent(10, &inside()));
-        assert!(!s.transparent(200, &inside()));
+        assert!(transparent(&s, 5, &inside()));
+        assert!(transparent(&s, 0, &inside()));
+        assert!(!transparent(&s, 10, &inside()));
+        assert!(!transparent(&s, 200, &inside()));
         // Invalid rays contribute nothing.
-        assert!(s.transparent(200, &invalid()));
+        assert!(transparent(&s, 200, &invalid()));
         // An edge voxel is fine when no gradient is needed.
-        assert!(!s.transparent(200, &edge()));
+        assert!(!transparent(&s, 200, &edge()));
     }
     for mode in [Mode::Composite, Mode::FirstOpaque] {
         let s = lit_shader(mode);
         // With gradients, an edge voxel (no valid gradient) is skipped.
-        assert!(s.transparent(200, &edge()));
-        assert!(s.transparent(200, &invalid()));
-        assert!(s.transparent(5, &inside()));
-        assert!(!s.transparent(200, &inside()));
+        assert!(transparent(&s, 200, &edge()));
+        assert!(transparent(&s, 200, &invalid()));
+        assert!(transparent(&s, 5, &inside()));
+        assert!(!transparent(&s, 200, &inside()));
     }
 }
 
@@ -126,7 +138,7 @@ fn transparency_before_the_gradient() {
 fn mip_and_minip_pass_the_intensity() {
     for mode in [Mode::Mip, Mode::Minip] {
         let s = shader(mode);
-        let out = s.sample(77, &inside(), no_gradient);
+        let out = sample(&s, 77, &inside(), no_gradient);
         assert_eq!(
             out,
             Sample {
@@ -135,8 +147,8 @@ fn mip_and_minip_pass_the_intensity() {
             }
         );
         // Low intensities are not classified away.
-        assert_eq!(s.sample(3, &inside(), no_gradient).value, [3, 0, 0, 0]);
-        let out = s.sample(77, &invalid(), no_gradient);
+        assert_eq!(sample(&s, 3, &inside(), no_gradient).value, [3, 0, 0, 0]);
+        let out = sample(&s, 77, &invalid(), no_gradient);
         assert!(!out.valid);
         assert_eq!(out.value, [77, 0, 0, 0]);
         // 16-bit intensities go through whole.
@@ -145,7 +157,7 @@ fn mip_and_minip_pass_the_intensity() {
             ..shader(mode)
         };
         assert_eq!(
-            s.sample(65535, &edge(), no_gradient).value,
+            sample(&s, 65535, &edge(), no_gradient).value,
             [65535, 0, 0, 0]
         );
     }
@@ -166,7 +178,7 @@ fn composite_weights_colour_by_opacity() {
     // alpha 100, colour (100, 155, 40), unlit: round(c * 100 / 255) =
     // 39.2 -> 39, 60.8 -> 61, 15.7 -> 16.
     assert_eq!(
-        s.sample(100, &inside(), no_gradient),
+        sample(&s, 100, &inside(), no_gradient),
         Sample {
             value: [39, 61, 16, 100],
             valid: true
@@ -202,8 +214,8 @@ fn composite_with_lighting() {
     assert_eq!(value(&s, 200, &inside(), [1, 2, 3]), [39, 11, 8, 200]);
     // Transparent voxels and edge voxels are not shaded (no gradient asked).
     assert_eq!(value(&s, 5, &inside(), [0; 3]), [0; 4]);
-    assert_eq!(s.sample(200, &edge(), no_gradient).value, [0; 4]);
-    assert_eq!(s.sample(200, &invalid(), no_gradient).value, [0; 4]);
+    assert_eq!(sample(&s, 200, &edge(), no_gradient).value, [0; 4]);
+    assert_eq!(sample(&s, 200, &invalid(), no_gradient).value, [0; 4]);
 }
 
 #[test]

@@ -1,5 +1,5 @@
 //! The gradient's quantized normal (Cube-4L §3.4; Cube-3's shading units),
-//! bit for bit as `golden_model::cube4l::gradient::quantize_normal`: all
+//! bit for bit as `golden_model::common::gradient::quantize_normal`: all
 //! three components shift right (rounding half up) until the largest fits
 //! in `normal_bits - 1` magnitude bits (`hardware.normal_bits`, a build
 //! parameter), then saturate to `±(2^(normal_bits - 1) - 1)`. [`LATENCY`]

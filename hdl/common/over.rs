@@ -1,7 +1,7 @@
 //! The over operator of front-to-back compositing (Cube-3's Eq. 1 in the
 //! RPC nodes, the same operator as Cube-4L §3.5): `C = sat(C_front +
 //! mul(M - A_front, C_back))` for one channel, combinational, bit for bit
-//! as the golden model's `cube4l::compositor::composite`, with `M =
+//! as the golden model's `common::compositor::composite`, with `M =
 //! 2^k - 1` (`k = rgba_bits`) and `mul = fixed::mul_unorm`.
 //!
 //! The RPC's accumulator runs this operator in a one-clock loop, so it is

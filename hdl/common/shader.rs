@@ -2,8 +2,8 @@
 //! classification LUT indexed by the voxel's top bits, the two-dimensional
 //! opacity LUT of gradient opacity, the lighting of the quantized gradient,
 //! and the opacity weighting, bit for bit as
-//! `golden_model::cube4l::shader::Shader::sample` (and Cube-3's
-//! `cube3::shade`):
+//! `golden_model::common::shader::Shader::sample` (Cube-3 feeds it as
+//! `golden_model::cube3::shade` does):
 //!
 //! 1. `alpha = classification[v >> shift].alpha`, or with gradient opacity
 //!    `gradient_opacity[(v >> shift) << 4 | bin]` ([`GradientBin`]); 0 on

@@ -92,7 +92,7 @@ impl<const P: usize> Rpc<P> {
         if let Err(e) = crate::common::lanes::built(P) {
             panic!("the RPC's leaves: {e}");
         }
-        let reset = golden_model::cube4l::compositor::reset_value(mode, voxel_bits)[0];
+        let reset = golden_model::common::compositor::reset_value(mode, voxel_bits)[0];
         Rpc {
             clock: Default::default(),
             leaf_r: std::array::from_fn(|_| Default::default()),

@@ -5,9 +5,9 @@
 //! stages share. The stages take their configuration from here, never from
 //! the pipeline or system that holds them.
 
+use golden_model::common::shader::Shader;
+use golden_model::common::shader::Shader as Shading;
 use golden_model::cube3::plan::{sample_pos, Neighbourhood, Template, View};
-use golden_model::cube3::shade::Shader;
-use golden_model::cube3::shade::Shader as Shading;
 use golden_model::host::{Reg, ViewTable, Write};
 use scene::volume::Volume;
 use scene::Mode;
@@ -275,7 +275,6 @@ impl Cube3Config {
         scanlines: usize,
     ) -> Result<Cube3Config, String> {
         crate::common::lanes::built(p)?;
-        let widths = shader.widths;
         let perspective = matches!(view.x, Template::Perspective { .. });
         let halo = shader.needs_gradient as usize;
         let (v0, scanlines) = (v0 - halo as i32, scanlines + 2 * halo);
@@ -330,8 +329,8 @@ impl Cube3Config {
                 basis10,
                 dx: increments(&view.x, &ray_u)?,
                 dy: increments(&view.y, &line_v)?,
-                sample_bits: widths.sample_bits,
-                gradient_bits: widths.gradient_bits,
+                sample_bits: shader.voxel_bits + shader.sample_frac,
+                gradient_bits: shader.gradient_bits,
             }),
         };
         let w = view.weight_bits;
@@ -395,9 +394,9 @@ impl Cube3Config {
             scanline_clocks: rays * segments,
             offset: view.offset,
             weight_bits: w,
-            voxel_bits: widths.voxel_bits,
-            sample_frac: widths.sample_frac(),
-            rgba_bits: widths.rgba_bits,
+            voxel_bits: shader.voxel_bits,
+            sample_frac: shader.sample_frac,
+            rgba_bits: shader.rgba_bits,
             perspective,
             wx: weights(&view.x, &ray_u),
             wy: weights(&view.y, &line_v),

@@ -158,18 +158,17 @@ impl<const P: usize, const H: usize> Cube3<P, H> {
         let shader = || -> Result<Shader, String> {
             match &c.shading {
                 Some(s) => {
-                    let w = s.widths;
-                    if w.gradient_bits > 31 {
+                    if s.gradient_bits > 31 {
                         return Err(format!(
                             "cube3.gradient_bits {} unsupported by the shader (at most 31)",
-                            w.gradient_bits
+                            s.gradient_bits
                         ));
                     }
                     let config = ShaderConfig::of(
                         &s.tables(),
-                        w.voxel_bits,
+                        s.voxel_bits,
                         s.needs_gradient,
-                        w.gradient_bits > 17,
+                        s.gradient_bits > 17,
                     );
                     Ok(Shader::new(&config))
                 }

@@ -37,12 +37,6 @@ use crate::common::banked_line::BankedLine;
 use crate::common::lane_copy::LaneCopy;
 use rust_hdl::prelude::*;
 
-/// The chain's delay lines, in clocks (`line_a` to `line_d`; a line of 1 is
-/// a register), for `s` beats per slice and `b` per beam.
-pub fn line_lengths(s: u32, b: u32) -> [u32; 4] {
-    [s - b - 1, b, b, s - b]
-}
-
 /// One pipeline's gradient unit (`H`-bit delay-line pointers).
 #[derive(LogicBlock)]
 pub struct AbcGradient<const H: usize> {
@@ -116,7 +110,7 @@ impl<const H: usize> AbcGradient<H> {
     pub fn new(c: &PipelineConfig) -> AbcGradient<H> {
         let enabled = c.gradient();
         let voxel_bits = c.voxel_bits;
-        let [a_len, b_len, c_len, d_len] = line_lengths(c.slice_beats(), c.beam_beats());
+        let [a_len, b_len, c_len, d_len] = c.gradient_line_lengths();
         let line = |length: u32| {
             BankedLine::new(
                 if enabled { length as usize } else { 1 },

@@ -1,7 +1,7 @@
 //! Compositing unit of the Cube-4L pipeline (§3.5, the C_k circles of Fig.
 //! 18): one voxel per clock, [`LATENCY`] register stages. It combines the bilinear
 //! unit's accumulated RGBA with the shaded voxel, bit for bit as
-//! `golden_model::cube4l::compositor::composite`:
+//! `golden_model::common::compositor::composite`:
 //!
 //! - over (composite, first-opaque): `C = sat(C_front + mul(M - A_front, C_back))`
 //!   per channel, where front/back are acc/new front to back and new/acc back

@@ -7,8 +7,8 @@
 //! of its class. The stages take their configuration from here, never from
 //! the pipeline that holds them.
 
-use super::abc_gradient;
 use super::bilinear;
+use super::cfb_stages::{ADDRESS_STAGES, READ_STAGES};
 use super::compositor;
 use crate::common::mode_class::ModeClass;
 use crate::common::ram::{bits_for, ON_CHIP_BITS};
@@ -52,7 +52,7 @@ impl PipelineConfig {
         sweep: &Sweep,
         vol_dims: [usize; 3],
         p: usize,
-        shader: &golden_model::cube4l::shader::Shader,
+        shader: &golden_model::common::shader::Shader,
     ) -> PipelineConfig {
         PipelineConfig {
             p: p as u32,
@@ -94,6 +94,14 @@ impl PipelineConfig {
     }
     pub fn slice_beats(&self) -> u32 {
         self.max_dim * self.beam_beats()
+    }
+
+    /// The gradient unit's delay lines, in clocks (`abc_gradient`'s
+    /// `line_a` to `line_d`; a line of 1 is a register), for S beats per
+    /// slice and B per beam: S - B - 1, B, B, S - B.
+    pub fn gradient_line_lengths(&self) -> [u32; 4] {
+        let (s, b) = (self.slice_beats(), self.beam_beats());
+        [s - b - 1, b, b, s - b]
     }
 
     /// Voxels per skewed memory module, and its address bits.
@@ -356,16 +364,6 @@ pub const GATHER_DELAY: usize = shader::LATENCY - 1 - bilinear::LATENCY;
 // would need registers of its own, which the control delay does not build).
 const _: () = assert!(shader::LATENCY > bilinear::LATENCY);
 
-/// Registered stages of the CFB's address before the block-RAM read: the
-/// skew and pipeline-to-dataset transform, the stride products, their sum.
-pub const ADDRESS_STAGES: usize = 3;
-
-/// Clocks from the CFB's registered address to its voxel on the lanes: the
-/// block RAM's registered read, the register beside it and a relay register
-/// beside the lane (`DepthRam::relay`; for external memory, the word's
-/// registers after its one-clock read).
-pub const READ_STAGES: usize = 3;
-
 /// Clocks of a sweep beyond one beat per clock: the start register, the
 /// CFB's address stages, the block-RAM read and its output register, the
 /// shader's input register, the gather's delay, the bilinear unit's latency
@@ -479,7 +477,7 @@ impl PipelineConfig {
             .collect();
         if self.gradient() {
             v.extend(
-                abc_gradient::line_lengths(self.slice_beats(), self.beam_beats())
+                self.gradient_line_lengths()
                     .iter()
                     .map(|&l| (l, self.voxel_bits as u64)),
             );

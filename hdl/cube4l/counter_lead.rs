@@ -6,7 +6,7 @@
 //! for the counters and the running bit, which a reset clears. Only
 //! perspective builds instantiate it.
 
-use super::config::{ADDRESS_STAGES, READ_STAGES};
+use super::cfb_stages::{ADDRESS_STAGES, READ_STAGES};
 use super::divider;
 use rust_hdl::prelude::*;
 

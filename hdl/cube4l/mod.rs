@@ -19,6 +19,7 @@ pub mod buffer_rows;
 pub mod buffer_tap;
 pub mod cfb;
 pub mod cfb_lane;
+pub mod cfb_stages;
 pub mod compositor;
 pub mod config;
 pub mod control_delay;

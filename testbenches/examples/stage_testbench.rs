@@ -15,9 +15,9 @@
 //! To test another stage, swap the block, its inputs and the golden
 //! function: every stage in `hdl` has a golden twin in `golden_model`.
 
-use golden_model::cube4l::compositor::composite;
-use golden_model::cube4l::plan::Order;
-use golden_model::cube4l::shader::Sample;
+use golden_model::common::compositor::composite;
+use golden_model::common::plan::Order;
+use golden_model::common::shader::Sample;
 use hdl::cube4l::compositor::LATENCY;
 use rust_hdl::prelude::*;
 use scene::Mode;

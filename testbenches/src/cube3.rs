@@ -9,8 +9,8 @@
 
 use cosim::harness::{ports, run_stage};
 use cosim::Engine;
+use golden_model::common::shader::Shader;
 use golden_model::cube3::plan::Plan;
-use golden_model::cube3::shade::Shader;
 use golden_model::cube3::{prp, render_view};
 use golden_model::host::Write;
 use hdl::cube3::config::Cube3Sizes;

@@ -5,11 +5,12 @@
 pub mod cube3;
 pub mod faults;
 
+use golden_model::common::compositor::{composite, reset_value};
+use golden_model::common::shader::Shader;
 use golden_model::cube4l::cfb::{CfbStream, SkewedMemory};
-use golden_model::cube4l::compositor::{composite, gather, reset_value};
+use golden_model::cube4l::compositor::gather;
 use golden_model::cube4l::gradient::central_difference;
 use golden_model::cube4l::plan::Sweep;
-use golden_model::cube4l::shader::Shader;
 use golden_model::cube4l::BasePlane;
 use reference::metrics::{compare, ErrorMetrics};
 use scene::volume::Volume;
@@ -97,7 +98,7 @@ pub fn stream_results(
             } else {
                 gather(&prev, nx, ny, x, y, c.dx, c.dy, sweep.frac, reset)
             };
-            let sample = shader.sample(lane.value as u32, &c, || {
+            let sample = shader.sample(lane.value as u32, c.invalid, c.edge, || {
                 central_difference(|ox, oy, oz| {
                     let at = |p: usize, o: isize| (p as isize + o) as usize;
                     let [u, v, w] = sweep.dataset(at(x, ox), at(y, oy), at(z, oz));

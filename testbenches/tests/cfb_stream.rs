@@ -1,10 +1,10 @@
 //! The CFB stream generator: exact skew, coverage, control bits and pixel
 //! addresses, and equality of stream-order processing with the golden model.
 
+use golden_model::common::shader::Shader;
 use golden_model::cube4l::cfb::{skew, CfbStream, SkewedMemory};
 use golden_model::cube4l::plan::Plan;
 use golden_model::cube4l::render_sweep;
-use golden_model::cube4l::shader::Shader;
 use scene::volume::{builtin, Volume};
 use std::collections::HashSet;
 use testbenches::{render_from_stream, scene};

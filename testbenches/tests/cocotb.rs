@@ -5,7 +5,7 @@
 //! cocotb test fail.
 
 use cosim::stage_vectors::compositor;
-use golden_model::cube4l::plan::Order;
+use golden_model::common::plan::Order;
 use hdl::cube4l::compositor::LATENCY;
 use scene::Mode;
 use std::path::{Path, PathBuf};

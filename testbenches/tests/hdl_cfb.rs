@@ -11,7 +11,7 @@ use golden_model::cube4l::regs::ViewRegs;
 use hdl::common::mode_class::ModeClass;
 use hdl::cube4l::{
     cfb::{face_code, Cfb},
-    config::{ADDRESS_STAGES, READ_STAGES},
+    cfb_stages::{ADDRESS_STAGES, READ_STAGES},
     counter_lead::LEAD,
     PipelineConfig,
 };

@@ -1,10 +1,10 @@
-//! `hdl::cube4l::compositor` against `golden_model::cube4l::compositor::composite`, cycle by
+//! `hdl::cube4l::compositor` against `golden_model::common::compositor::composite`, cycle by
 //! cycle in rust-hdl simulation, for every mode, both orders and two RGBA
 //! widths; its Verilog passes yosys.
 
-use golden_model::cube4l::compositor::composite;
-use golden_model::cube4l::plan::Order;
-use golden_model::cube4l::shader::Sample;
+use golden_model::common::compositor::composite;
+use golden_model::common::plan::Order;
+use golden_model::common::shader::Sample;
 use golden_model::fixed::max_of;
 use hdl::common::mode_class::ModeClass;
 use hdl::cube4l::compositor::{Compositor, LATENCY};

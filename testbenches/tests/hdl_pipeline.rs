@@ -4,10 +4,10 @@
 //! base-plane pixel and its address, and the clocks per sweep.
 
 use cosim::drive_host_port;
+use golden_model::common::shader::Shader as GoldenShader;
 use golden_model::cube4l::cfb::SkewedMemory;
 use golden_model::cube4l::plan::{Face, Plan};
 use golden_model::cube4l::regs::ViewRegs;
-use golden_model::cube4l::shader::Shader as GoldenShader;
 use hdl::cube4l::{config::unpack, Pipeline, PipelineConfig};
 use rust_hdl::prelude::*;
 use scene::volume::builtin;
@@ -190,7 +190,8 @@ const VIEWS: [&str; 5] = [
 
 #[test]
 fn views_cover_both_orders_and_every_sign() {
-    use golden_model::cube4l::plan::{Order, Rays};
+    use golden_model::common::plan::Order;
+    use golden_model::cube4l::plan::Rays;
     let (mut orders, mut dx, mut dy) = (Vec::new(), Vec::new(), Vec::new());
     for view in VIEWS {
         let s = scene(&format!(

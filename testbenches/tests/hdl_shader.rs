@@ -1,4 +1,4 @@
-//! `hdl::common::shader` alone against `golden_model::cube4l::shader::Shader::sample`,
+//! `hdl::common::shader` alone against `golden_model::common::shader::Shader::sample`,
 //! clock by clock in rust-hdl simulation, its sample `shader::LATENCY`
 //! clocks after its input: classification (1-D and 2-D with gradient
 //! opacity), the normal quantizer and lighting, shading and opacity
@@ -15,8 +15,8 @@
 //! model's `true` for a transparent sample); that is not compared.
 
 use cosim::drive_host_port;
-use golden_model::cube4l::plan::{Control, Face, Plan};
-use golden_model::cube4l::shader::Shader as Golden;
+use golden_model::common::shader::Shader as Golden;
+use golden_model::cube4l::plan::Plan;
 use hdl::common::shader::{Shader, ShaderConfig, LATENCY};
 use rust_hdl::prelude::*;
 use testbenches::{run_clocks, scene, Edge, Vectors};
@@ -68,16 +68,7 @@ fn check(json: &str, seed: u64, preload: bool) {
     let expected: Vec<([u32; 4], bool)> = vs
         .iter()
         .map(|v| {
-            let c = Control {
-                dx: 0,
-                dy: 0,
-                sr: false,
-                er: false,
-                invalid: v.invalid,
-                edge: v.edge,
-                face: Face::None,
-            };
-            let out = golden.sample(v.value, &c, || v.gradient);
+            let out = golden.sample(v.value, v.invalid, v.edge, || v.gradient);
             (out.value, out.valid || !compare_valid)
         })
         .collect();

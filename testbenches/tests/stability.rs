@@ -314,7 +314,7 @@ fn gradient_magnitude_opacity() {
     ));
     let cam = s.camera();
     let plan = Plan::new(&s, &cam).unwrap();
-    let shader = golden_model::cube4l::shader::Shader::new(&s, &cam, &plan.sweeps[0]);
+    let shader = golden_model::common::shader::Shader::new(&s, &cam, &plan.sweeps[0]);
     assert!(shader.opacity.as_ref().unwrap().gm_shift.is_some());
     let c = run("sphere", "[32,32,32]", &parallel([70.0, 30.0, 0.0]), tf);
     // Measured 6.26 %.

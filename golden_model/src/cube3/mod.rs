@@ -4,7 +4,8 @@
 //! fetched as beams and sheared or de-fanned into 2-D skewed buffers (`prp`),
 //! sheared tri-linear interpolation (`trilin`, §3), ABC gradients over the
 //! above, current and below sample planes (`abc`, §4), shading and
-//! classification by LUT (`shade`), and the Ray Projection Cone (`rpc`, §5).
+//! classification by the kit's shader (`common::shader`, fed as `shade`
+//! says), and the Ray Projection Cone (`rpc`, §5).
 //! The base planes are warped to the image by the kit's warp.
 //!
 //! Dataflow for one base plane, scanline by scanline as the hardware does:
@@ -27,13 +28,13 @@ pub mod shade;
 pub mod surface;
 pub mod trilin;
 
+use crate::common::shader::Shader;
 use abc::{gradient, Planes, RayCoeffs};
 use plan::{sample_pos, Neighbourhood, Plan, View, Widths};
 use rayon::prelude::*;
 use rpc::{fold, identity, node, pixel};
 use scene::volume::Voxels;
 use scene::{Camera, CubeError, Image, Mode, Result, Scene};
-use shade::Shader;
 use trilin::SamplePlane;
 
 /// The base-plane image of one view: pixel `(u, v)` for `u` in
@@ -125,9 +126,10 @@ pub fn render_view(
     let [w, h] = view.base_dims();
     let (u0, v0) = (view.u[0], view.v[0]);
     let vol = &prp::Traversal::new(vol, view);
+    let identity = &shade::identity_table(shader);
     let rows: Vec<(Vec<[u32; 4]>, Vec<bool>, Stats)> = chunks(view)
         .into_par_iter()
-        .map(|[va, vb]| render_rows(vol, view, shader, n, p, va, vb))
+        .map(|[va, vb]| render_rows(vol, view, (shader, identity), n, p, va, vb))
         .collect();
     let mut base = BasePlane {
         u0,
@@ -208,11 +210,12 @@ pub fn scanlines(
     }
 }
 
-/// Scanlines `va..=vb` of a base plane: pixels, cast flags and counters.
+/// Scanlines `va..=vb` of a base plane: pixels, cast flags and counters
+/// (`shading`: the shader and its `shade::identity_table`).
 fn render_rows(
     vol: &prp::Traversal,
     view: &View,
-    shader: &Shader,
+    shading: (&Shader, &[bool]),
     n: Neighbourhood,
     p: usize,
     va: i32,
@@ -221,7 +224,8 @@ fn render_rows(
     let mut stats = Stats::default();
     let mut pixels = Vec::new();
     let mut cast = Vec::new();
-    let f = shader.widths.sample_frac();
+    let shader = shading.0;
+    let f = shader.sample_frac;
     scanlines(
         vol,
         view,
@@ -245,7 +249,7 @@ fn render_rows(
                         coeffs = Some(RayCoeffs::new(dx, dy, w));
                     }
                 }
-                let (px, any, s) = cast_ray(view, shader, n, p, window, coeffs.as_ref(), u, v);
+                let (px, any, s) = cast_ray(view, shading, n, p, window, coeffs.as_ref(), u, v);
                 // A MIP/MinIP ray without a sample inside the volume has
                 // no value: the warp leaves it out, as it does uncast rays.
                 cast.push(any);
@@ -262,7 +266,7 @@ fn render_rows(
 #[allow(clippy::too_many_arguments)]
 fn cast_ray(
     view: &View,
-    shader: &Shader,
+    (shader, zero): (&Shader, &[bool]),
     n: Neighbourhood,
     p: usize,
     planes: &Planes,
@@ -274,7 +278,8 @@ fn cast_ray(
     let [nx, ny, nk] = view.dims;
     let (dx, dy) = (view.x.d(u), view.y.d(v));
     let mode = shader.mode;
-    let rgba = shader.widths.rgba_bits;
+    let f = shader.sample_frac;
+    let rgba = shader.rgba_bits;
     let m = crate::fixed::max_of(rgba);
     let within = |q: i64, lo: i64, hi: i64| q >= lo << w && q <= hi << w;
     let mut st = Stats::default();
@@ -290,7 +295,7 @@ fn cast_ray(
         // A segment of zero leaves leaves the accumulator as it is, with no
         // clipped node: its samples are counted and skipped.
         let samples = &ray[seg * p..((seg + 1) * p).min(nk)];
-        if samples.iter().all(|&s| shader.is_identity(s)) {
+        if samples.iter().all(|&s| zero[(s >> f) as usize]) {
             st.samples += samples.len() as u64;
             continue;
         }
@@ -309,7 +314,7 @@ fn cast_ray(
             let inner = within(xq, 1, nx - 2) && within(yq, 1, ny - 2) && within(zq, 1, nk - 2);
             let s = planes.current.at(u, k);
             let mut shaded = false;
-            *leaf = shader.leaf(s, inside, inner, || {
+            *leaf = shade::leaf(shader, s, inside, inner, || {
                 shaded = true;
                 let (g, sat) = gradient(
                     n,
@@ -318,7 +323,7 @@ fn cast_ray(
                     k,
                     coeffs.expect("the ray's estimator constants, with gradients"),
                     w,
-                    shader.widths.gradient_bits,
+                    shader.gradient_bits,
                 );
                 st.gradient_saturations += sat as u64;
                 g
@@ -334,7 +339,7 @@ fn cast_ray(
             st.composite_saturations += c1 + c2 as u64;
         }
     }
-    (pixel(mode, acc, shader.widths.voxel_bits), acc.valid, st)
+    (pixel(mode, acc, shader.voxel_bits), acc.valid, st)
 }
 
 /// Render every base plane of the view (`vol`: a
@@ -371,7 +376,7 @@ pub fn render_image(scene: &Scene, vol: &dyn Voxels, n: Neighbourhood) -> Result
 
 /// Warp the base planes to the image: each pixel's ray meets its base
 /// plane's start plane (`k = O`) at continuous `(x, y)`, where the cast
-/// pixels are resampled bilinearly (`warp::bilinear`).
+/// pixels are resampled bilinearly (`common::warp::bilinear`).
 pub fn warp(frame: &Frame, camera: &Camera, mode: Mode) -> Image {
     let wd = frame.widths;
     let dims = {
@@ -383,8 +388,8 @@ pub fn warp(frame: &Frame, camera: &Camera, mode: Mode) -> Image {
         d
     };
     let hi = glam::DVec3::from_array(dims.map(|n| (n - 1) as f64));
-    crate::warp::warp_with(camera, |o, d| {
-        crate::cube4l::plan::slab(o, d, glam::DVec3::ZERO, hi)?;
+    crate::common::warp::warp_with(camera, |o, d| {
+        crate::common::plan::slab(o, d, glam::DVec3::ZERO, hi)?;
         let vi = frame.plan.view_for(d)?;
         let (view, base) = (&frame.plan.views[vi], &frame.bases[vi]);
         let (po, pd) = (view.point(o), view.to_traversal() * d);
@@ -394,10 +399,10 @@ pub fn warp(frame: &Frame, camera: &Camera, mode: Mode) -> Image {
         let z = view.offset as f64 / (1u64 << view.weight_bits) as f64;
         let q = po + pd * ((z - po.z) / pd.z);
         let at = glam::DVec2::new(q.x - base.u0 as f64, q.y - base.v0 as f64);
-        let v = crate::warp::bilinear(base.width, base.height, at, |i| {
+        let v = crate::common::warp::bilinear(base.width, base.height, at, |i| {
             base.cast[i].then(|| base.pixels[i])
         })?;
-        Some(crate::warp::to_rgb(
+        Some(crate::common::warp::to_rgb(
             mode,
             v,
             wd.rgba_bits,

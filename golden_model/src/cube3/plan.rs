@@ -38,7 +38,7 @@
 //! entry; for parallel views `E_B - E_A = 2^W` and `wx = xq - E_A` exactly,
 //! in `[0, 2^W)` by Eq. 3). The clamp is counted in `Stats::weight_clamps`.
 
-use crate::cube4l::plan::{dominant_axis, ray_sums};
+use crate::common::plan::{dominant_axis, ray_sums};
 use crate::fixed::{quantize, round_div};
 use glam::{DMat3, DVec3};
 use scene::{Camera, CubeError, Projection, Result, Scene};

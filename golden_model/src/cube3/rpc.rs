@@ -24,9 +24,9 @@
 //! accumulator's α is `M`, `op(acc, x) = acc` for every `x`, so the rest of
 //! the ray is skipped without changing a bit.
 
-use crate::cube4l::compositor::{composite, reset_value};
-use crate::cube4l::plan::Order;
-use crate::cube4l::shader::Sample;
+use crate::common::compositor::{composite, reset_value};
+use crate::common::plan::Order;
+use crate::common::shader::Sample;
 use scene::Mode;
 
 /// A tree value: `[r, g, b, α]` (composite), `[value, 0, 0, 0]` (MIP,
@@ -156,8 +156,9 @@ mod tests {
     }
 
     #[test]
-    fn over_equals_cube4l_front_to_back() {
-        // The same operator as Cube-4L's compositor, front to back.
+    fn over_equals_the_compositing_unit_front_to_back() {
+        // The same operator as the compositing unit (`common::compositor`,
+        // Cube-4L's), front to back.
         for (a, b) in [
             ([10, 20, 30, 40], [250, 1, 2, 250]),
             ([255, 255, 0, 255], [3, 3, 3, 3]),

@@ -1,7 +1,7 @@
 //! The Cube-4L golden model: ray-slice-sweeping (§2) through the whole
 //! pipeline CFB -> ABC gradient -> shader/classifier -> bilinear unit ->
 //! compositor, one slice at a time, producing the base-plane image of each
-//! sweep. The slice is processed in raster order; the hardware's skewed
+//! sweep (the shader and the compositing unit are the kit's, in `common`). The slice is processed in raster order; the hardware's skewed
 //! order (`cfb::CfbStream`) visits the same voxels with the same control, and
 //! the result of a slice does not depend on the order within it.
 //!
@@ -19,17 +19,19 @@ pub mod frame;
 pub mod gradient;
 pub mod plan;
 pub mod regs;
-pub mod shader;
+pub mod warp;
 
 pub use frame::{BasePlane, Frame, Stats};
 
-use compositor::{composite, gather, gather_row, reset_value};
+use crate::common::compositor::{composite, reset_value};
+use crate::common::plan::Order;
+use crate::common::shader::Shader;
+use compositor::{gather, gather_row};
 use gradient::central_difference;
-use plan::{Control, Face, Order, Plan, Rays, Sweep};
+use plan::{Control, Face, Plan, Rays, Sweep};
 use rayon::prelude::*;
 use scene::volume::{InOrder, Voxels};
 use scene::{Camera, Mode, Scene};
-use shader::Shader;
 
 /// A pixel leaving on ER: base-plane address, value and face.
 type PixelOut = ([usize; 2], [u32; 4], Face);
@@ -78,9 +80,22 @@ fn nonreset(row: &[[u32; 4]], within: std::ops::Range<usize>, reset: [u32; 4]) -
     }
 }
 
+/// Whether compositing voxel `v` leaves every cell as it is, whatever its
+/// control bits: composite, first-opaque and X-ray, its opacity row is zero
+/// (`Shader::is_zero`: a zero sample, `acc + mul(M - a, 0) = acc` front to
+/// back, `0 + mul(M, acc) = acc` back to front, `acc + 0` in X-ray); MIP, it
+/// is 0 (`max(acc, 0)`); MinIP, it is the largest voxel (`min(acc, max)`).
+fn is_identity(shader: &Shader, v: u32) -> bool {
+    match shader.mode {
+        Mode::Mip => v == 0,
+        Mode::Minip => v == crate::fixed::max_of(shader.voxel_bits),
+        _ => shader.is_zero(v),
+    }
+}
+
 /// Render one sweep to its base plane.
 ///
-/// A voxel whose composite is the identity (`Shader::is_identity`) inside
+/// A voxel whose composite is the identity ([`is_identity`]) inside
 /// the slice (no ER there) makes its cell what the bilinear unit gathers,
 /// with no control bits, shading or compositing. The empty-space skip: when
 /// the cell's 3x3 neighbourhood in the previous slice is all reset, that is
@@ -117,7 +132,7 @@ pub fn render_sweep(vol: &dyn Voxels, sweep: &Sweep, shader: &Shader) -> (BasePl
         && matches!(shader.mode, Mode::Composite | Mode::FirstOpaque);
     let opaque_front = |acc: [u32; 4]| hides && acc[3] == full;
     let identity: Vec<bool> = (0..=crate::fixed::max_of(shader.voxel_bits))
-        .map(|v| shader.is_identity(v))
+        .map(|v| is_identity(shader, v))
         .collect();
     for z in sweep.z0..=sweep.z1 {
         let first = z == sweep.z0;
@@ -152,10 +167,10 @@ pub fn render_sweep(vol: &dyn Voxels, sweep: &Sweep, shader: &Shader) -> (BasePl
                     let cell = if opaque_front(acc) {
                         acc
                     } else {
-                        if shader.mode.uses_colour() && !shader.transparent(v, c) {
+                        if shader.mode.uses_colour() && !shader.transparent(v, c.invalid, c.edge) {
                             st.shaded += 1;
                         }
-                        let sample = shader.sample(v, c, || {
+                        let sample = shader.sample(v, c.invalid, c.edge, || {
                             central_difference(|ox, oy, oz| {
                                 let i = at as isize
                                     + ox * strides[0] as isize
@@ -307,6 +322,6 @@ pub fn render_image(scene: &Scene, vol: &dyn Voxels) -> scene::Result<(scene::Im
     let camera = scene.camera();
     let frame = render(scene, &camera, vol)?;
     let hw = scene.hardware;
-    let img = crate::warp::warp(&frame, &camera, scene.mode, hw.rgba_bits, hw.voxel_bits);
+    let img = warp::warp(&frame, &camera, scene.mode, hw.rgba_bits, hw.voxel_bits);
     Ok((img, frame))
 }

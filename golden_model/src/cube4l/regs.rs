@@ -4,7 +4,8 @@
 //! its class. The hardware derives what it needs from them (the last
 //! indices, the delay lines' lengths, the late control's start).
 
-use super::plan::{Order, Rays, Sweep};
+use super::plan::{Rays, Sweep};
+use crate::common::plan::Order;
 use crate::host::{pack16, Reg, Write};
 use scene::Mode;
 

@@ -1,19 +1,15 @@
-//! The 2-D warp (Cube-4L §2, "warped onto the image plane"; Cube-3 §2, "a 2-D
-//! warp of the base-plane projection produces the final image"). Shared:
-//! `warp_with` (one ray per image pixel), `bilinear` (resampling over the
-//! pixels a base plane has) and `to_rgb` (display range per mode). Cube-4L's
-//! warp follows here; Cube-3's base-plane map is in `cube3::warp`.
-//!
-//! Cube-4L: each final-image
+//! Cube-4L's warp (§2, "warped onto the image plane"): each final-image
 //! pixel's ray is followed to the face of the swept box through which it left
-//! the compositing buffer, and the base plane is resampled there bilinearly,
-//! using only pixels that came out of the same face. Parallel and
-//! perspective views take the same path; a multi-sweep perspective frame takes
-//! each pixel from the sweep of its ray's major axis and direction.
+//! the compositing buffer, and the base plane is resampled there bilinearly
+//! (`common::warp::bilinear`), using only pixels that came out of the same
+//! face. Parallel and perspective views take the same path; a multi-sweep
+//! perspective frame takes each pixel from the sweep of its ray's major axis
+//! and direction.
 
-use crate::cube4l::frame::{BasePlane, Frame};
-use crate::cube4l::plan::{slab, Face, Sweep};
-use crate::fixed::max_of;
+use super::frame::{BasePlane, Frame};
+use super::plan::{Face, Sweep};
+use crate::common::plan::slab;
+use crate::common::warp::{bilinear, to_rgb, warp_with};
 use glam::{DAffine2, DVec2, DVec3};
 use scene::{Camera, Image, Mode};
 
@@ -34,80 +30,11 @@ fn face_to_base(sweep: &Sweep, face: Face) -> DAffine2 {
     }
 }
 
-/// Bilinear sample at `p` of a `width` x `height` base plane over the
-/// pixels `pixel(i)` gives (weights renormalised over them); `None` if none
-/// of the four is there.
-pub fn bilinear(
-    width: usize,
-    height: usize,
-    p: DVec2,
-    pixel: impl Fn(usize) -> Option<[u32; 4]>,
-) -> Option<[f64; 4]> {
-    let (x0, y0) = (p.x.floor(), p.y.floor());
-    let (fx, fy) = (p.x - x0, p.y - y0);
-    let mut acc = [0.0; 4];
-    let mut wsum = 0.0;
-    for (ox, oy, w) in [
-        (0, 0, (1.0 - fx) * (1.0 - fy)),
-        (1, 0, fx * (1.0 - fy)),
-        (0, 1, (1.0 - fx) * fy),
-        (1, 1, fx * fy),
-    ] {
-        let (cx, cy) = (x0 as i64 + ox, y0 as i64 + oy);
-        if w <= 0.0 || cx < 0 || cy < 0 || cx >= width as i64 || cy >= height as i64 {
-            continue;
-        }
-        let Some(v) = pixel(cx as usize + width * cy as usize) else {
-            continue;
-        };
-        for (a, v) in acc.iter_mut().zip(v) {
-            *a += w * v as f64;
-        }
-        wsum += w;
-    }
-    (wsum > 1e-9).then(|| acc.map(|a| a / wsum))
-}
-
 /// Bilinear sample of a Cube-4L base plane over the pixels of `face` only.
 fn sample_face(base: &BasePlane, p: DVec2, face: Face) -> Option<[f64; 4]> {
     bilinear(base.width, base.height, p, |i| {
         (base.faces[i] == face).then(|| base.pixels[i])
     })
-}
-
-/// The final image: each pixel's ray `(origin, direction)` in dataset space
-/// goes to `lookup`, which returns its display RGB or `None` (background).
-pub fn warp_with(
-    camera: &Camera,
-    lookup: impl Fn(DVec3, DVec3) -> Option<[f64; 3]> + Sync,
-) -> Image {
-    use rayon::prelude::*;
-    let mut img = Image::black(camera.width, camera.height);
-    img.rgb
-        .par_chunks_mut(camera.width as usize)
-        .enumerate()
-        .for_each(|(j, row)| {
-            for (i, px) in row.iter_mut().enumerate() {
-                let (o, d) = camera.ray(i as u32, j as u32);
-                if let Some(c) = lookup(o, d) {
-                    *px = c;
-                }
-            }
-        });
-    img
-}
-
-/// Convert a base-plane pixel value to display RGB for `mode`; `depth` is
-/// the sweep's slice count (X-ray normalisation).
-pub fn to_rgb(mode: Mode, v: [f64; 4], rgba_bits: u32, voxel_bits: u32, depth: usize) -> [f64; 3] {
-    let m = max_of(rgba_bits) as f64;
-    let rgb = match mode {
-        Mode::Composite | Mode::FirstOpaque => [v[0] / m, v[1] / m, v[2] / m],
-        Mode::Mip | Mode::Minip => [v[0] / max_of(voxel_bits) as f64; 3],
-        Mode::Xray => [v[0] / (m * depth as f64); 3],
-    };
-    // The renormalised bilinear weights can overshoot by an ulp.
-    rgb.map(|c| c.clamp(0.0, 1.0))
 }
 
 /// Warp a Cube-4L frame's base planes to the final image.
@@ -153,7 +80,6 @@ pub fn warp(frame: &Frame, camera: &Camera, mode: Mode, rgba_bits: u32, voxel_bi
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cube4l::plan::Sweep;
 
     #[test]
     fn face_maps_agree_with_base_addresses() {
