@@ -87,7 +87,13 @@ fn read_png(path: &std::path::Path, [w, h]: [u32; 2]) -> Result<Image> {
             .with_guessed_format()
             .with_context(|| format!("reading {}", path.display()))
     };
-    let (width, height) = open()?
+    // The header alone, without the decoder's memory limit (it refuses a
+    // 2^31 x 1 header as "Memory limit exceeded" before the size can be
+    // named); the pixels are decoded, under the limit, only at the scene's
+    // size.
+    let mut header = open()?;
+    header.no_limits();
+    let (width, height) = header
         .into_dimensions()
         .with_context(|| format!("decoding {} as an image", path.display()))?;
     if (width, height) != (w, h) {

@@ -86,7 +86,29 @@ fn file_name(path: &Path) -> Result<()> {
             path.display()
         );
     }
-    Ok(())
+    long_names(path)
+}
+
+/// Longest name of a file or folder (Linux's `NAME_MAX`).
+const NAME_MAX: usize = 255;
+
+/// Refuse a path with a part longer than a file name may be, before any
+/// work (the rename at the end would fail).
+fn long_names(path: &Path) -> Result<()> {
+    use std::os::unix::ffi::OsStrExt;
+    match path
+        .as_os_str()
+        .as_bytes()
+        .split(|&b| b == b'/')
+        .find(|part| part.len() > NAME_MAX)
+    {
+        Some(part) => bail!(
+            "{}: a name in it is {} bytes, longer than the {NAME_MAX} a file name may have",
+            path.display(),
+            part.len()
+        ),
+        None => Ok(()),
+    }
 }
 
 /// Check the folder a file output is written in, before any work: it (or,
@@ -348,6 +370,7 @@ impl Files {
     /// it now is among the files it would write, so it is refused when an
     /// input lies in it, or is a hard link to a file in it.
     pub fn output_dir(&mut self, what: &str, dir: &Path) -> Result<()> {
+        long_names(dir)?;
         let named = format!("{what} {}", dir.display());
         let at = resolve(dir)?.0;
         let inside = |i: &Input| {

@@ -258,6 +258,9 @@ struct Point {
     hw: Option<HwPrice>,
     cost_seconds: f64,
     image_hash: String,
+    /// The golden model's warning that its error may exceed its usual
+    /// range for this view (Cube-4L's near-edge perspective caveat).
+    caveat: Option<Value>,
 }
 
 /// What a hardware point costs and where each figure comes from.
@@ -478,6 +481,7 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
             .collect();
         let mut p = point(f.name, params, &r.image, &yard, r.seconds, hw, cost);
         p.volume_prep_seconds = r.extra["volume_prep_seconds"].as_f64();
+        p.caveat = Some(r.extra["accuracy_caveat"].clone()).filter(|c| !c.is_null());
         points.push(p);
         bar.inc(1);
     }
@@ -699,6 +703,7 @@ fn point(
         hw,
         cost_seconds,
         image_hash: format!("{:016x}", h.finish()),
+        caveat: None,
     }
 }
 
@@ -759,6 +764,7 @@ fn row_json(p: &Point, on_front: bool) -> Value {
         "cost_seconds": p.cost_seconds,
         "pareto": on_front,
         "image_hash": p.image_hash,
+        "accuracy_caveat": p.caveat,
     })
 }
 
@@ -905,6 +911,17 @@ fn markdown(points: &[Point], front: &[usize], report: &Value) -> String {
                         .join("; "))
                     .unwrap_or_default()
             );
+        }
+    }
+    let mut caveats: Vec<(&str, &str)> = points
+        .iter()
+        .filter_map(|p| Some((p.method.as_str(), p.caveat.as_ref()?["message"].as_str()?)))
+        .collect();
+    caveats.dedup();
+    if !caveats.is_empty() {
+        s += "\n## Accuracy caveats\n\nThe golden model warns that this view lies outside the range its error is known in:\n\n";
+        for (m, c) in caveats {
+            s += &format!("- {m}: {c}\n");
         }
     }
     if let Some(sk) = report["skipped"].as_array().filter(|n| !n.is_empty()) {

@@ -372,6 +372,27 @@ fn any_legal_name_is_taken_and_a_folder_path_is_not_a_file() {
         );
     }
     assert!(!p.join("x.png").exists());
+    // One byte more than a name may have: refused before the render, for a
+    // file and for an export's directory.
+    let over = format!("{}.png", "a".repeat(252));
+    refused(
+        &cube(&["render", "--scene", "s.json", "--out", &over], p),
+        "a name in it is 256 bytes, longer than the 255 a file name may have",
+    );
+    refused(
+        &cube(
+            &[
+                "verilog",
+                "--config",
+                "mip_p4_64",
+                "--out",
+                &format!("sub/{over}"),
+            ],
+            p,
+        ),
+        "a name in it is 256 bytes",
+    );
+    assert!(!p.join("sub").exists());
     assert_eq!(leftovers(p), Vec::<String>::new());
 }
 

@@ -231,3 +231,80 @@ fn a_simulation_thread_that_cannot_start_is_one_line() {
     let o = cube_limited(&["sim", "--scene", "s.json"], p, "32", 1_500_000_000);
     refused(&o, "cannot start a thread");
 }
+
+/// The caveat reaches `tradeoff` too: each Cube-4L point of a near-edge
+/// view carries it in the JSON, and the Markdown says it once.
+#[test]
+fn tradeoff_carries_the_near_edge_caveat() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    std::fs::write(
+        p.join("s.json"),
+        r#"{"volume": {"builtin": "phantom", "dims": [16, 16, 16]}, "view": {"projection": "perspective", "eye": [17, 17, 17], "target": [7.5, 7.5, 7.6], "up": [0, 1, 0], "fov_deg": 60}, "image": [16, 16]}"#,
+    )
+    .unwrap();
+    ok(&cube(
+        &[
+            "tradeoff", "--scene", "s.json", "--out", "t", "--repeat", "1",
+        ],
+        p,
+    ));
+    let j: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(p.join("t/tradeoff.json")).unwrap()).unwrap();
+    let points = j["points"].as_array().unwrap();
+    let cube4l: Vec<_> = points.iter().filter(|x| x["method"] == "cube4l").collect();
+    assert!(!cube4l.is_empty());
+    for x in &cube4l {
+        assert_eq!(
+            x["accuracy_caveat"]["expected_error_percent"],
+            serde_json::json!([8.0, 33.0]),
+            "{x}"
+        );
+    }
+    assert!(points
+        .iter()
+        .filter(|x| x["method"] == "reference")
+        .all(|x| x["accuracy_caveat"].is_null()));
+    let md = std::fs::read_to_string(p.join("t/tradeoff.md")).unwrap();
+    assert_eq!(md.matches("## Accuracy caveats").count(), 1, "{md}");
+    assert!(md.contains("- cube4l: the eye is"), "{md}");
+}
+
+/// A PNG whose header claims 2^31 − 1 × 1 pixels is refused by its size,
+/// before any pixel is decoded, not as a memory limit.
+#[test]
+fn compare_names_the_size_of_a_huge_png() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    std::fs::write(
+        p.join("s.json"),
+        r#"{"volume": {"builtin": "sphere", "dims": [16, 16, 16]}, "view": {"projection": "parallel", "rotate_deg": [30, 20, 0]}, "image": [32, 32]}"#,
+    )
+    .unwrap();
+    // IHDR of width 2^31 − 1, height 1, 8-bit RGB; an IDAT of 100 zeros.
+    let chunk = |kind: &[u8], data: &[u8]| {
+        let mut c = (data.len() as u32).to_be_bytes().to_vec();
+        c.extend_from_slice(kind);
+        c.extend_from_slice(data);
+        let mut h = crc32fast::Hasher::new();
+        h.update(kind);
+        h.update(data);
+        c.extend_from_slice(&h.finalize().to_be_bytes());
+        c
+    };
+    let mut ihdr = 2147483647u32.to_be_bytes().to_vec();
+    ihdr.extend_from_slice(&1u32.to_be_bytes());
+    ihdr.extend_from_slice(&[8, 2, 0, 0, 0]);
+    let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
+    png.extend(chunk(b"IHDR", &ihdr));
+    png.extend(chunk(
+        b"IDAT",
+        &[0x78, 0x9c, 0x63, 0x60, 0x18, 0, 0, 0, 0x64, 0, 1],
+    ));
+    png.extend(chunk(b"IEND", &[]));
+    std::fs::write(p.join("huge.png"), png).unwrap();
+    refused(
+        &cube(&["compare", "--scene", "s.json", "--image", "huge.png"], p),
+        "huge.png is 2147483647x1; the scene's image is 32x32",
+    );
+}
