@@ -146,6 +146,49 @@ fn verilog_out_never_deletes_a_users_files() {
     assert!(p.join("v/mine.v").exists());
 }
 
+/// An export's own files are replaced only as it wrote them: a top.v edited
+/// since, a top.v that is now a directory, or a directory whose only file is
+/// a manifest.json of the user's is refused, and stays as it was.
+#[test]
+fn verilog_out_never_replaces_an_edited_export() {
+    let (d, s) = setup();
+    let p = d.path();
+    let export = |out: &str| cube(&["verilog", "--scene", &s, "--out", out], p);
+    let o = export("v");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let m: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(p.join("v/manifest.json")).unwrap()).unwrap();
+    let top = std::fs::read(p.join("v/top.v")).unwrap();
+    assert_eq!(
+        m["files_crc32"]["top.v"].as_str().unwrap(),
+        format!("{:08x}", crc32fast::hash(&top)),
+        "the manifest records top.v's CRC-32"
+    );
+    let edited = [top.as_slice(), b"// my fix\n"].concat();
+    std::fs::write(p.join("v/top.v"), &edited).unwrap();
+    one_line_error(&export("v"), "top.v is not the file the export");
+    assert_eq!(std::fs::read(p.join("v/top.v")).unwrap(), edited);
+    // Put back as written, it is the export's again.
+    std::fs::write(p.join("v/top.v"), &top).unwrap();
+    assert!(export("v").status.success());
+    // A directory where the export writes a file.
+    std::fs::remove_file(p.join("v/top.v")).unwrap();
+    std::fs::create_dir(p.join("v/top.v")).unwrap();
+    one_line_error(
+        &export("v"),
+        "top.v, a directory where an export writes a file",
+    );
+    assert!(p.join("v/top.v").is_dir());
+    // A user's manifest.json, alone in its directory.
+    std::fs::create_dir(p.join("w")).unwrap();
+    std::fs::write(p.join("w/manifest.json"), "{\"mine\": 1}").unwrap();
+    one_line_error(&export("w"), "holds no manifest.json with the record");
+    assert_eq!(
+        std::fs::read_to_string(p.join("w/manifest.json")).unwrap(),
+        "{\"mine\": 1}"
+    );
+}
+
 #[test]
 fn special_files_are_written_through_never_replaced() {
     let (d, s) = setup();

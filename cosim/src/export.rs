@@ -9,11 +9,39 @@ use crate::verilog::{names, wrapper, write_stage_files};
 use scene::{Camera, Scene};
 use std::path::Path;
 
-/// Whether `out` may be replaced by an export: it does not exist, or it is
-/// a directory holding only what an export of some architecture writes
-/// (stage files, `lint.vlt`, `manifest.json`, and part directories such as
-/// `sweep<i>/` or `base_plane<i>/` of the same). Anything else is a
-/// user's, and is never deleted.
+/// The manifest's record of what the export wrote: each file's CRC-32 by
+/// its path in the export (every file but `manifest.json` itself).
+const RECORD: &str = "files_crc32";
+
+/// Each file under `dir` (recursively), by its path relative to `dir`, and
+/// its CRC-32 as 8 hex digits; `manifest.json` at the top is left out.
+fn checksums(dir: &Path) -> std::io::Result<serde_json::Map<String, serde_json::Value>> {
+    let mut out = serde_json::Map::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for entry in std::fs::read_dir(&d)? {
+            let path = entry?.path();
+            if path.is_dir() {
+                stack.push(path);
+                continue;
+            }
+            let rel = path.strip_prefix(dir).unwrap_or(&path).to_string_lossy();
+            if rel != "manifest.json" {
+                let crc = crc32fast::hash(&std::fs::read(&path)?);
+                out.insert(rel.to_string(), format!("{crc:08x}").into());
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Whether `out` may be replaced by an export: it does not exist, it is an
+/// empty directory, or it holds only what an earlier export wrote there,
+/// unchanged: stage files, `lint.vlt`, the integrable top and part
+/// directories (`sweep<i>/`, `base_plane<i>/`) by name, each file as the
+/// CRC-32 its `manifest.json` records. A file edited since, a name an
+/// export does not write, or a manifest without the record is a user's,
+/// and is never deleted.
 fn replaceable(out: &Path) -> Result<(), String> {
     // The integrable top, `ARCH_NAME.v` ([`integration_top`]).
     let integration = |name: &str| {
@@ -33,41 +61,100 @@ fn replaceable(out: &Path) -> Result<(), String> {
                 .is_some_and(|i| !i.is_empty() && i.bytes().all(|b| b.is_ascii_digit()))
         })
     };
-    fn check(
-        dir: &Path,
-        top: bool,
-        ours_file: &dyn Fn(&str) -> bool,
-        ours_dir: &dyn Fn(&str) -> bool,
-    ) -> Result<(), String> {
-        let entries = std::fs::read_dir(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-        for entry in entries {
-            let entry = entry.map_err(|e| format!("{}: {e}", dir.display()))?;
-            let name = entry.file_name().to_string_lossy().to_string();
-            let kind = entry
-                .file_type()
-                .map_err(|e| format!("{}: {e}", dir.display()))?;
-            let ours = if kind.is_dir() {
-                top && ours_dir(&name) && check(&entry.path(), false, ours_file, ours_dir).is_ok()
-            } else {
-                kind.is_file() && (ours_file(&name) || (top && name == "manifest.json"))
-            };
-            if !ours {
+    let (top, rel) = (out.display().to_string(), |p: &Path| {
+        p.strip_prefix(out)
+            .unwrap_or(p)
+            .to_string_lossy()
+            .to_string()
+    });
+    let choose = "choose a new or empty directory";
+    let io = |p: &Path, e: std::io::Error| format!("{}: {e}", p.display());
+    let m = match std::fs::symlink_metadata(out) {
+        Err(_) => return Ok(()),
+        Ok(m) => m,
+    };
+    if !m.is_dir() {
+        return Err(format!(
+            "{top} exists and is not a directory; an export writes a directory"
+        ));
+    }
+    if std::fs::read_dir(out)
+        .map_err(|e| io(out, e))?
+        .next()
+        .is_none()
+    {
+        return Ok(());
+    }
+    // First each name, then each file against the manifest's record.
+    let mut files = Vec::new();
+    let mut stack = vec![(out.to_path_buf(), true)];
+    while let Some((dir, at_top)) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).map_err(|e| io(&dir, e))? {
+            let entry = entry.map_err(|e| io(&dir, e))?;
+            let (path, name) = (
+                entry.path(),
+                entry.file_name().to_string_lossy().to_string(),
+            );
+            let kind = entry.file_type().map_err(|e| io(&path, e))?;
+            if at_top && name == "manifest.json" && kind.is_file() {
+                continue;
+            }
+            if kind.is_dir() && at_top && ours_dir(&name) {
+                stack.push((path, false));
+                continue;
+            }
+            if !kind.is_file() || !ours_file(&name) {
+                let what = if kind.is_dir() {
+                    "a directory"
+                } else if kind.is_symlink() {
+                    "a link"
+                } else if kind.is_file() {
+                    "a file"
+                } else {
+                    "a special file"
+                };
+                let why = if ours_file(&name) || (at_top && name == "manifest.json") {
+                    "where an export writes a file"
+                } else {
+                    "which an export does not write"
+                };
                 return Err(format!(
-                    "{} holds {name}, which an export does not write; choose a new or empty directory",
+                    "{} holds {name}, {what} {why}; {choose}",
                     dir.display()
                 ));
             }
+            files.push(path);
         }
-        Ok(())
     }
-    match std::fs::symlink_metadata(out) {
-        Err(_) => Ok(()),
-        Ok(m) if m.is_dir() => check(out, true, &ours_file, &ours_dir),
-        Ok(_) => Err(format!(
-            "{} exists and is not a directory; an export writes a directory",
-            out.display()
-        )),
+    let manifest = out.join("manifest.json");
+    let record = std::fs::symlink_metadata(&manifest)
+        .ok()
+        .filter(|m| m.is_file())
+        .and_then(|_| std::fs::read_to_string(&manifest).ok())
+        .and_then(|t| serde_json::from_str::<serde_json::Value>(&t).ok())
+        .and_then(|v| v.get(RECORD).and_then(|r| r.as_object()).cloned())
+        .ok_or_else(|| {
+            format!(
+                "{top} is not empty and holds no manifest.json with the record of an \
+                 export's files (`{RECORD}`), so what is in it is not known to be an \
+                 export's; {choose}"
+            )
+        })?;
+    for path in files {
+        let crc = format!(
+            "{:08x}",
+            crc32fast::hash(&std::fs::read(&path).map_err(|e| io(&path, e))?)
+        );
+        if record.get(&rel(&path)).and_then(|v| v.as_str()) != Some(crc.as_str()) {
+            return Err(format!(
+                "{} is not the file the export that wrote {top} recorded in its \
+                 manifest.json (edited since?); an export replaces only its own files \
+                 unchanged: {choose}",
+                path.display()
+            ));
+        }
     }
+    Ok(())
 }
 
 /// What an export is of: a build, and the scene that asked for it.
@@ -150,7 +237,7 @@ pub fn integration_top<A: Arch>(build: &A::Config) -> String {
 
 /// Build the export directory `out` through `fill` (given a fresh directory
 /// beside `out`, it writes the files and returns the manifest, which goes to
-/// `manifest.json`), then rename it over `out`: written whole or not at
+/// `manifest.json` with the record of each file's CRC-32), then rename it over `out`: written whole or not at
 /// all. `out` must be replaceable (see [`replaceable`]).
 fn write_dir(
     out: &Path,
@@ -170,7 +257,8 @@ fn write_dir(
     let _ = std::fs::remove_dir_all(&tmp);
     let result = (|| {
         std::fs::create_dir_all(&tmp).map_err(io)?;
-        let manifest = fill(&tmp)?;
+        let mut manifest = fill(&tmp)?;
+        manifest[RECORD] = checksums(&tmp).map_err(io)?.into();
         let text = serde_json::to_string_pretty(&manifest).map_err(|e| e.to_string())? + "\n";
         std::fs::write(tmp.join("manifest.json"), text).map_err(io)?;
         let old = parent.join(format!(".cube-{}-export.old", std::process::id()));
