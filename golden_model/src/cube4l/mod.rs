@@ -15,6 +15,7 @@
 pub mod caveat;
 pub mod cfb;
 pub mod compositor;
+pub mod dram;
 pub mod frame;
 pub mod gradient;
 pub mod plan;
