@@ -146,6 +146,40 @@ fn verilog_out_never_deletes_a_users_files() {
     assert!(p.join("v/mine.v").exists());
 }
 
+/// `--out` through `..` names the folder it resolves to: an export there is
+/// replaced in place, nothing is left beside it, a folder's mode is kept,
+/// and a path up from a folder that does not exist is refused before any
+/// folder is made.
+#[test]
+fn verilog_out_through_dot_dot_replaces_in_place() {
+    use std::os::unix::fs::PermissionsExt;
+    let (d, s) = setup();
+    let p = d.path();
+    let export = |out: &str| cube(&["verilog", "--scene", &s, "--out", out], p);
+    std::fs::create_dir(p.join("v")).unwrap();
+    std::fs::set_permissions(p.join("v"), std::fs::Permissions::from_mode(0o700)).unwrap();
+    for out in ["v", "v/../v", "./v/../v/"] {
+        let o = export(out);
+        assert!(
+            o.status.success(),
+            "{out}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        assert!(p.join("v/top.v").is_file(), "{out}");
+    }
+    let mode = std::fs::metadata(p.join("v")).unwrap().permissions().mode() & 0o777;
+    assert_eq!(mode, 0o700, "the folder's mode is kept");
+    one_line_error(&export("nosuch/../w"), "does not name a directory");
+    one_line_error(&export("v/sub/.."), "does not name a directory");
+    assert!(!p.join("nosuch").exists() && !p.join("w").exists());
+    let left: Vec<_> = std::fs::read_dir(p)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().to_string())
+        .filter(|n| n.starts_with(".cube-"))
+        .collect();
+    assert!(left.is_empty(), "left beside the export: {left:?}");
+}
+
 /// An export's own files are replaced only as it wrote them: a top.v edited
 /// since, a top.v that is now a directory, or a directory whose only file is
 /// a manifest.json of the user's is refused, and stays as it was.

@@ -179,22 +179,21 @@ pub fn write_export<A: Arch>(
     build: &A::Config,
     scene: Option<&ExportScene>,
 ) -> Result<serde_json::Value, String> {
-    replaceable(out)?;
-    let parts = match scene {
-        Some(s) => A::parts(s.scene, s.camera, s.dims, build)?,
-        None => vec![],
-    };
-    // One design for the build: every part of it renders on it, its view
-    // in registers and tables.
-    let designs: Vec<(String, String)> = match A::design(build) {
-        Ok(v) => vec![(".".to_string(), v)],
-        Err(e) => match parts.first() {
-            Some(p) => vec![(".".to_string(), A::verilog(p, None)?)],
-            None => return Err(e),
-        },
-    };
-    let left_out = A::left_out(build);
     write_dir(out, |tmp| {
+        let parts = match scene {
+            Some(s) => A::parts(s.scene, s.camera, s.dims, build)?,
+            None => vec![],
+        };
+        // One design for the build: every part of it renders on it, its view
+        // in registers and tables.
+        let designs: Vec<(String, String)> = match A::design(build) {
+            Ok(v) => vec![(".".to_string(), v)],
+            Err(e) => match parts.first() {
+                Some(p) => vec![(".".to_string(), A::verilog(p, None)?)],
+                None => return Err(e),
+            },
+        };
+        let left_out = A::left_out(build);
         let io = |e: std::io::Error| format!("{}: {e}", out.display());
         let mut files = Vec::new();
         for (sub, v) in &designs {
@@ -235,42 +234,121 @@ pub fn integration_top<A: Arch>(build: &A::Config) -> String {
     format!("{}_{}", A::NAME, A::config_name(build))
 }
 
+/// `out` as an absolute path with no `.` or `..` in it: its parent's
+/// longest existing ancestor resolved (links followed), the rest of the
+/// path below it taken as written. Also the first folder of that rest,
+/// which the export creates (and removes again if it fails). A path that
+/// ends in `..`, or that goes up (`..`) from a folder that does not exist,
+/// names no directory to write.
+fn resolve(out: &Path) -> Result<(std::path::PathBuf, Option<std::path::PathBuf>), String> {
+    use std::path::Component;
+    let not_a_dir = || format!("{} does not name a directory to write", out.display());
+    let name = match out.components().next_back() {
+        Some(Component::Normal(n)) => n.to_os_string(),
+        _ => return Err(not_a_dir()),
+    };
+    let parent: std::path::PathBuf = {
+        let mut c = out.components();
+        c.next_back();
+        c.as_path().to_path_buf()
+    };
+    let parent = if parent.as_os_str().is_empty() {
+        std::path::PathBuf::from(".")
+    } else {
+        parent
+    };
+    let mut existing = parent.as_path();
+    let mut rest = Vec::new();
+    loop {
+        match std::fs::metadata(existing) {
+            Ok(_) => break,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
+            Err(e) => return Err(format!("{}: {e}", existing.display())),
+        }
+        match (existing.file_name(), existing.parent()) {
+            (Some(n), Some(up)) => {
+                rest.push(n.to_os_string());
+                existing = if up.as_os_str().is_empty() {
+                    Path::new(".")
+                } else {
+                    up
+                };
+            }
+            // A trailing `..` or `.` of a folder that does not exist.
+            _ => return Err(not_a_dir()),
+        }
+    }
+    if existing.components().any(|c| c == Component::ParentDir) && !rest.is_empty() {
+        return Err(not_a_dir());
+    }
+    let mut dir = std::fs::canonicalize(existing).map_err(|e| format!("{}: {e}", out.display()))?;
+    let created = rest.last().map(|first| dir.join(first));
+    for n in rest.iter().rev() {
+        dir.push(n);
+    }
+    Ok((dir.join(name), created))
+}
+
 /// Build the export directory `out` through `fill` (given a fresh directory
-/// beside `out`, it writes the files and returns the manifest, which goes to
-/// `manifest.json` with the record of each file's CRC-32), then rename it over `out`: written whole or not at
-/// all. `out` must be replaceable (see [`replaceable`]).
+/// beside `out`, made before any work, it writes the files and returns the
+/// manifest, which goes to `manifest.json` with the record of each file's
+/// CRC-32), then rename it over `out`: written whole or not at all. `out`
+/// must be replaceable (see [`replaceable`]); a directory it replaces keeps
+/// its mode and, where the process may set it, its owner. A run that fails
+/// leaves `out` as it was, and removes the folders it made.
 fn write_dir(
     out: &Path,
     fill: impl FnOnce(&Path) -> Result<serde_json::Value, String>,
 ) -> Result<serde_json::Value, String> {
-    replaceable(out)?;
-    let parent = match out.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => std::path::PathBuf::from("."),
-    };
-    out.file_name()
-        .ok_or_else(|| format!("{} is not a directory path", out.display()))?;
+    let (target, created) = resolve(out)?;
+    replaceable(&target)?;
     let io = |e: std::io::Error| format!("{}: {e}", out.display());
-    std::fs::create_dir_all(&parent).map_err(io)?;
+    let parent = target
+        .parent()
+        .ok_or_else(|| format!("{} is not a directory path", out.display()))?;
+    let before = std::fs::symlink_metadata(&target).ok();
+    if let (Some(m), Ok(up)) = (&before, std::fs::metadata(parent)) {
+        use std::os::unix::fs::MetadataExt;
+        if m.dev() != up.dev() {
+            return Err(format!(
+                "{} is a mount point, which an export cannot replace; choose a folder inside it",
+                out.display()
+            ));
+        }
+    }
     // Short names, so that any legal name of `out` has room beside it.
     let tmp = parent.join(format!(".cube-{}-export.tmp", std::process::id()));
-    let _ = std::fs::remove_dir_all(&tmp);
+    let old = parent.join(format!(".cube-{}-export.old", std::process::id()));
     let result = (|| {
-        std::fs::create_dir_all(&tmp).map_err(io)?;
+        std::fs::create_dir_all(parent).map_err(io)?;
+        let _ = std::fs::remove_dir_all(&tmp);
+        std::fs::create_dir(&tmp).map_err(io)?;
         let mut manifest = fill(&tmp)?;
         manifest[RECORD] = checksums(&tmp).map_err(io)?.into();
         let text = serde_json::to_string_pretty(&manifest).map_err(|e| e.to_string())? + "\n";
         std::fs::write(tmp.join("manifest.json"), text).map_err(io)?;
-        let old = parent.join(format!(".cube-{}-export.old", std::process::id()));
-        if out.exists() {
-            std::fs::rename(out, &old).map_err(io)?;
+        if let Some(m) = &before {
+            use std::os::unix::fs::MetadataExt;
+            std::fs::set_permissions(&tmp, m.permissions()).map_err(io)?;
+            // Only a privileged process may give a folder away; otherwise
+            // the folder is the process's, as it was to be able to write it.
+            let _ = std::os::unix::fs::chown(&tmp, Some(m.uid()), Some(m.gid()));
+            std::fs::rename(&target, &old).map_err(io)?;
         }
-        std::fs::rename(&tmp, out).map_err(io)?;
+        if let Err(e) = std::fs::rename(&tmp, &target) {
+            if before.is_some() {
+                let _ = std::fs::rename(&old, &target);
+            }
+            return Err(io(e));
+        }
         let _ = std::fs::remove_dir_all(&old);
         Ok(manifest)
     })();
     if result.is_err() {
         let _ = std::fs::remove_dir_all(&tmp);
+        if let Some(c) = created {
+            let _ = std::fs::remove_dir_all(c);
+        }
     }
     result
 }
