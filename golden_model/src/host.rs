@@ -5,12 +5,13 @@
 //! words the host writes, so a testbench can write them and the hardware
 //! renders what the golden model renders.
 //!
-//! The address map (`docs/registers.md` describes every register):
+//! The address map (every register's fields are in [`crate::regmap`], and
+//! `docs/registers.md`'s tables are generated from it):
 //!
 //! | addresses | what |
 //! |---|---|
 //! | `0x000000 ..= 0x0000ff` | registers, 64 bits each ([`Reg`]) |
-//! | `0x010000 + i` | classification LUT entry `i`: `r | g << 16 | b << 32 | alpha << 48` |
+//! | `0x010000 + i` | classification LUT entry `i` (`regmap::Entry::Classification`) |
 //! | `0x020000 + i` | gradient-opacity LUT entry `(row << 4) | bin`: alpha |
 //! | `0x030000 + i` | diffuse term by cosine index `i` |
 //! | `0x031000 + i` | specular term by cosine index `i` |
@@ -22,6 +23,7 @@
 
 use crate::fixed::max_of;
 use crate::lut::{ColourLut, Lighting, OpacityLut};
+use crate::regmap::{pack, Entry};
 use scene::Mode;
 
 /// One write of the host port.
@@ -34,67 +36,54 @@ pub struct Write {
 /// Bits of the host port's address.
 pub const ADDRESS_BITS: usize = 24;
 
-/// The registers, by address.
+/// The registers, by address; their fields are in [`crate::regmap::MAP`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[repr(u32)]
 pub enum Reg {
     /// The shader's light and half vectors in the gradient's space
-    /// (`lut::Lighting::light` and `half`): three 16-bit two's-complement
-    /// components, x in the low bits.
+    /// (`lut::Lighting::light` and `half`).
     Light = 0x10,
     Half = 0x11,
     /// The gradient-opacity LUT's magnitude shift (`OpacityLut::gm_shift`
     /// plus the sample's fractional bits for Cube-3).
     GmShift = 0x12,
-    /// Cube-4L's view (`cube4l::regs::ViewRegs`): the pipeline-space dims
-    /// `nx | ny << 16 | nz << 32`;
+    /// Cube-4L's view (`cube4l::regs::ViewRegs`): the pipeline-space dims,
     Dims = 0x20,
-    /// the slices `z0 | z1 << 16 | stream_z0 << 32 | stream_z1 << 48`;
+    /// the slices,
     Slices = 0x21,
-    /// the pipeline axes of dataset u, v, w, two bits each;
+    /// the pipeline axes of dataset u, v, w,
     Axes = 0x22,
-    /// the skewed memory's address: `b_u | slab << 16`;
+    /// the skewed memory's strides,
     Address = 0x23,
-    /// the frame registers dx and dy (two's complement);
+    /// the frame registers dx and dy,
     Dx = 0x24,
     Dy = 0x25,
-    /// the negated eye (two's complement);
+    /// the negated eye,
     EyeX = 0x26,
     EyeY = 0x27,
     EyeZ = 0x28,
-    /// the beats of a slice and of a beam: `slice | beam << 32`;
+    /// the beats of a slice and of a beam,
     Beats = 0x29,
-    /// the order and the scalar mode: `front_to_back | minip << 1`.
+    /// the order and the scalar mode.
     Order = 0x2a,
-    /// Cube-3's view (`hdl::cube3::config::Cube3SystemConfig::view_writes`):
-    /// the stream `rays | scanlines << 16 | segments << 32 | planes written
-    /// << 48`;
+    /// Cube-3's view (`cube3::regs`): the stream,
     C3Stream = 0x30,
-    /// the traversal dims `n_x | n_y << 16 | K << 32`;
+    /// the traversal dims,
     C3Dims = 0x31,
-    /// the memory's strides `b | b·n_y << 16`, and the rows' and
-    /// templates' strides (perspective: `K + 1` and `G`, parallel: 0)
-    /// `<< 32`, `<< 48`;
+    /// the memory's, rows' and templates' strides,
     C3Address = 0x32,
-    /// the stream's first ray and scanline and the view's offset
-    /// `u0 | v0 << 16 | offset << 32` (two's complement);
+    /// the stream's first ray and scanline and the view's offset,
     C3Origin = 0x33,
-    /// the fetch's schedule: `period - 1 | last chunk << 24 | last plane
-    /// << 48` (24-bit period and chunk);
+    /// the fetch's schedule,
     C3Schedule = 0x34,
-    /// the cast rays and scanlines `ray_lo | ray_span << 16 | line_lo << 32
-    /// | line_span << 48`;
+    /// the cast rays and scanlines,
     C3Cast = 0x35,
-    /// the delay lines' lengths less one: the units' counters, the TRILIN
-    /// cells, the ABC centre's counters and the flags
-    /// (`G | G - 2 << 16 | trilin latency + G << 32 | ABC delay - 1 << 48`);
+    /// the delay lines' lengths less one,
     C3Delays = 0x36,
-    /// the ABC sample-plane lines' lengths less one: `G - 3 | T - 2G - 3
-    /// << 16`;
+    /// the ABC sample-plane lines' lengths less one,
     C3Lines = 0x37,
-    /// the 10-neighbourhood's weights `T_x | T_y << 16` and its basis
-    /// correction's rows `C_i0 | C_i1 << 16 | C_i2 << 32` (two's
-    /// complement, `W` fractional bits): one set, a parallel view's.
+    /// and the 10-neighbourhood's weights and basis correction's rows (one
+    /// set, a parallel view's).
     C3Weights10 = 0x38,
     C3Basis10X = 0x39,
     C3Basis10Y = 0x3a,
@@ -203,18 +192,11 @@ fn window_writes(base: u32, words: impl IntoIterator<Item = u64>) -> Vec<Write> 
         .collect()
 }
 
-/// Values in 16-bit fields, the first lowest.
-pub fn pack16(v: &[u64]) -> u64 {
-    v.iter()
-        .enumerate()
-        .fold(0, |w, (i, &c)| w | (c & 0xffff) << (16 * i))
-}
-
-/// Three signed components in 16-bit fields, x lowest.
+/// Three signed components in 16-bit fields, x lowest: `Light`'s and
+/// `Half`'s layout.
 pub fn pack3(v: [i32; 3]) -> u64 {
-    v.iter()
-        .enumerate()
-        .fold(0, |w, (i, &c)| w | ((c as u16) as u64) << (16 * i))
+    let [x, y, z] = v.map(|c| c as i64);
+    pack(Reg::Light, &[("x", x), ("y", y), ("z", z)])
 }
 
 /// What a shader is built from: the golden model's tables, Cube-4L's or
@@ -255,10 +237,12 @@ impl ShaderTables<'_> {
         (0..o.table.len() / bins)
             .map(|i| {
                 let rgb = self.colour.map_or([0; 3], |c| c.table[i]);
-                rgb[0] as u64
-                    | (rgb[1] as u64) << 16
-                    | (rgb[2] as u64) << 32
-                    | self.alpha(o.table[i * bins]) << 48
+                let [r, g, b] = rgb.map(|c| c as i64);
+                let alpha = self.alpha(o.table[i * bins]) as i64;
+                pack(
+                    Entry::Classification,
+                    &[("r", r), ("g", g), ("b", b), ("alpha", alpha)],
+                )
             })
             .collect()
     }

@@ -15,9 +15,10 @@
 //! helpers, the gradient helpers, the one shader, the compositing unit and
 //! the warp's shared parts), [`fixed`] (every rounding, truncation and
 //! saturation, named), [`lut`] (the classification and shading LUTs filled
-//! from the scene's transfer function and lighting) and [`host`] (the words
+//! from the scene's transfer function and lighting), [`host`] (the words
 //! the host writes into the hardware's registers and tables between
-//! frames). Scenes, volumes, the camera and the float formulas come from the
+//! frames) and [`regmap`] (those words' fields by name, which the encoders
+//! pack through and `docs/registers.md` is generated from). Scenes, volumes, the camera and the float formulas come from the
 //! `scene` crate.
 
 pub mod common;
@@ -27,3 +28,4 @@ pub mod fixed;
 pub mod host;
 pub mod lut;
 pub mod quantized;
+pub mod regmap;

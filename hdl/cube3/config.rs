@@ -8,7 +8,9 @@
 use golden_model::common::shader::Shader;
 use golden_model::common::shader::Shader as Shading;
 use golden_model::cube3::plan::{sample_pos, Neighbourhood, Template, View};
-use golden_model::host::{Reg, ViewTable, Write};
+pub use golden_model::cube3::regs::Group;
+use golden_model::cube3::regs::{AbcView, FetchView, PipelineView};
+use golden_model::host::Write;
 use scene::volume::Volume;
 use scene::Mode;
 
@@ -28,16 +30,6 @@ pub const GROUP_BITS: usize = 18;
 /// registered beside it), the row, the lanes' addresses, and the memory
 /// modules' read.
 pub const WRITE_LATENCY: usize = 4;
-
-/// One clock of a perspective PRP's writes: plane `plane`, stream rays
-/// `ray .. ray + x.len()` at beam positions `x` (increasing; those in the
-/// volume in distinct memory modules, `x mod P` distinct).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Group {
-    pub plane: usize,
-    pub ray: usize,
-    pub x: Vec<i32>,
-}
 
 /// What the beam fetch is built from.
 #[derive(Debug, Clone)]
@@ -641,196 +633,76 @@ impl Cube3Sizes {
     }
 }
 
-/// A 16-bit field of a register word.
-fn field(v: i64, at: u32) -> u64 {
-    ((v as u64) & 0xffff) << at
-}
-
-/// The 10-neighbourhood's registers: the weights `T` and the basis
-/// correction's rows, in 16-bit two's-complement fields.
-pub fn basis10_writes(t: [u32; 2], c: &[[i64; 3]; 3]) -> Vec<Write> {
-    let row = |r: &[i64; 3]| field(r[0], 0) | field(r[1], 16) | field(r[2], 32);
-    vec![
-        reg(
-            Reg::C3Weights10,
-            field(t[0] as i64, 0) | field(t[1] as i64, 16),
-        ),
-        reg(Reg::C3Basis10X, row(&c[0])),
-        reg(Reg::C3Basis10Y, row(&c[1])),
-        reg(Reg::C3Basis10Z, row(&c[2])),
-    ]
-}
-
-/// A 24-bit field: the schedule's period and its last perspective group
-/// (up to 2^18 in a 256 class).
-fn field24(v: i64, at: u32) -> u64 {
-    ((v as u64) & 0xff_ffff) << at
-}
-
 impl BeamFetchConfig {
-    /// The beam fetch's view words: the stream, dims, strides, origin
-    /// (with the pipeline's `offset`) and schedule registers, the `pos_x`
-    /// and `pos_y` tables and a perspective view's groups.
+    /// The beam fetch's view words (`golden_model::cube3::regs::FetchView`),
+    /// with the pipeline's `offset`.
     pub fn view_writes(&self, offset: u32) -> Vec<Write> {
-        let f = self;
-        let [nx, ny, nk] = f.dims.map(|d| d as i64);
-        let (g, p) = (f.segments as i64, f.p);
-        let b = (nx + p as i64 - 1) / p as i64;
-        let persp = f.perspective();
-        let (last_chunk, last_plane) = if persp {
-            (f.groups.len() as i64 - 1, 0)
-        } else {
-            (f.rays.div_ceil(p) as i64 - 1, f.planes_written() as i64 - 1)
-        };
-        let mut w = vec![
-            reg(
-                Reg::C3Stream,
-                field(f.rays as i64, 0)
-                    | field(f.scanlines as i64, 16)
-                    | field(g, 32)
-                    | field(f.planes_written() as i64, 48),
-            ),
-            reg(Reg::C3Dims, field(nx, 0) | field(ny, 16) | field(nk, 32)),
-            reg(
-                Reg::C3Address,
-                field(b, 0)
-                    | field(b * ny, 16)
-                    | field(if persp { nk + 1 } else { 0 }, 32)
-                    | field(if persp { g } else { 0 }, 48),
-            ),
-            reg(
-                Reg::C3Origin,
-                field(f.u0 as i64, 0) | field(f.v0 as i64, 16) | field(offset as i64, 32),
-            ),
-            reg(
-                Reg::C3Schedule,
-                field24(f.period() as i64 - 1, 0) | field24(last_chunk, 24) | field(last_plane, 48),
-            ),
-        ];
-        let word16 = |v: &[i32]| v.iter().map(|&x| (x as u64) & 0xffff).collect::<Vec<_>>();
-        w.extend(ViewTable::PosX.writes(word16(&f.pos_x)));
-        w.extend(ViewTable::PosY.writes(word16(&f.pos_y)));
-        if persp {
-            w.extend(
-                ViewTable::Groups.writes(
-                    f.groups
-                        .iter()
-                        .map(|grp| grp.plane as u64 | (grp.ray as u64) << 16),
-                ),
-            );
-            for j in 0..p {
-                w.extend(
-                    ViewTable::GroupX(j).writes(
-                        f.groups
-                            .iter()
-                            .map(|grp| grp.x.get(j).map_or(0, |&x| (x as u64 & 0xffff) | 1 << 16)),
-                    ),
-                );
-            }
+        FetchView {
+            p: self.p,
+            dims: self.dims,
+            u0: self.u0,
+            v0: self.v0,
+            rays: self.rays,
+            scanlines: self.scanlines,
+            segments: self.segments,
+            planes_written: self.planes_written(),
+            period: self.period(),
+            offset,
+            pos_x: &self.pos_x,
+            pos_y: &self.pos_y,
+            groups: &self.groups,
         }
-        w
+        .writes()
     }
 }
 
 impl Cube3Config {
-    /// The pipeline's own view words: the cast-ray, delay and line
-    /// registers, the X-ray opacity table, the increments, and each
-    /// lane's bounds and templates.
+    /// The pipeline's own view words
+    /// (`golden_model::cube3::regs::PipelineView`), with the delay lines'
+    /// lengths this RTL's latencies set.
     pub fn view_writes(&self) -> Vec<Write> {
-        let c = self;
-        let (g, p) = (c.segments as i64, c.p);
+        let g = self.segments as i64;
         // The centre line ends a clock before the centre: the increments'
         // tables are read into a register.
-        let centre_last = if c.perspective {
+        let centre_last = if self.perspective {
             (super::trilin::LATENCY as i64 + g + 1) - 2
         } else {
             0
         };
-        let lines = match c.abc {
-            Some(_) => super::plane_taps::line_lengths(c.scanline_clocks, c.segments)
+        let lines = match self.abc {
+            Some(_) => super::plane_taps::line_lengths(self.scanline_clocks, self.segments)
                 .map_or([1, 1], |l| [l[0] as i64 - 1, l[2] as i64 - 1]),
             None => [0, 0],
         };
-        let span = |lo: u32, hi: u32| hi.wrapping_sub(lo) as i64;
-        let mut w = vec![
-            reg(
-                Reg::C3Cast,
-                field(c.cast[0] as i64, 0)
-                    | field(span(c.cast[0], c.cast[1]), 16)
-                    | field(c.cast[2] as i64, 32)
-                    | field(span(c.cast[2], c.cast[3]), 48),
-            ),
-            reg(
-                Reg::C3Delays,
-                field(super::trilin_lanes::cell_delay(c.segments) as i64 - 1, 0)
-                    | field(g - 2, 16)
-                    | field(centre_last, 32)
-                    | field(c.abc_delay().max(1) as i64 - 1, 48),
-            ),
-            reg(Reg::C3Lines, field(lines[0], 0) | field(lines[1], 16)),
-        ];
-        if let Some((table, _)) = &c.opacity {
-            w.extend(ViewTable::XrayOpacity.writes(table.iter().map(|&v| v as u64)));
+        PipelineView {
+            p: self.p,
+            segments: self.segments,
+            cast: self.cast,
+            late_last: super::trilin_lanes::cell_delay(self.segments) as i64 - 1,
+            centre_last,
+            flags_last: self.abc_delay().max(1) as i64 - 1,
+            lines,
+            opacity: self.opacity.as_ref().map(|(table, _)| &table[..]),
+            abc: self.abc.as_ref().map(|a| AbcView {
+                dx: &a.dx,
+                dy: &a.dy,
+                basis10: a.basis10,
+                inner: &self.inner,
+            }),
+            bounds: &self.bounds,
+            wx: &self.wx,
+            wx_rays: self.wx_rays(),
+            wy: &self.wy,
+            wy_scanlines: self.wy_scanlines(),
         }
-        if let Some(a) = &c.abc {
-            let inc = |d: &[i32]| -> Vec<u64> {
-                d.iter()
-                    .map(|&d| d.unsigned_abs() as u64 | ((d < 0) as u64) << 16)
-                    .collect()
-            };
-            w.extend(ViewTable::Dx.writes(inc(&a.dx)));
-            w.extend(ViewTable::Dy.writes(inc(&a.dy)));
-            if let Some((t, c)) = &a.basis10 {
-                w.extend(basis10_writes(*t, c));
-            }
-        }
-        for j in 0..p {
-            let bound = |b: &[[u32; 4]], k: usize| {
-                let [rl, rh, vl, vh] = b.get(k).copied().unwrap_or([1, 0, 1, 0]);
-                rl as u64 | (rh as u64) << 16 | (vl as u64) << 32 | (vh as u64) << 48
-            };
-            let by_segment = |b: &[[u32; 4]]| {
-                (0..c.segments)
-                    .map(|s| bound(b, s * p + j))
-                    .collect::<Vec<_>>()
-            };
-            w.extend(ViewTable::Bounds(j).writes(by_segment(&c.bounds)));
-            if c.abc.is_some() {
-                w.extend(ViewTable::Inner(j).writes(by_segment(&c.inner)));
-            }
-            // Lane j's weight k = s·P + j of ray (scanline) r at r·G + s.
-            let template = |wt: &[u32], lines: usize| {
-                let nk = wt.len() / lines;
-                (0..lines * c.segments)
-                    .map(|a| {
-                        let (r, k) = (a / c.segments, (a % c.segments) * p + j);
-                        if k < nk {
-                            wt[r * nk + k] as u64
-                        } else {
-                            0
-                        }
-                    })
-                    .collect::<Vec<_>>()
-            };
-            w.extend(ViewTable::Wx(j).writes(template(&c.wx, c.wx_rays())));
-            w.extend(ViewTable::Wy(j).writes(template(&c.wy, c.wy_scanlines())));
-        }
-        w
-    }
-}
-
-/// A register's write.
-fn reg(r: Reg, data: u64) -> Write {
-    Write {
-        address: r.address(),
-        data,
+        .writes()
     }
 }
 
 impl Cube3SystemConfig {
     /// The words the host writes before this base plane's frame: the view
     /// registers and tables (`golden_model::host::Reg::C3Stream ..=
-    /// C3Lines`, `ViewTable`) of the beam fetch, then of the pipeline.
+    /// C3Basis10Z`, `ViewTable`) of the beam fetch, then of the pipeline.
     /// The shader's tables and light are written beside them
     /// (`Shader::tables`).
     pub fn view_writes(&self) -> Vec<Write> {

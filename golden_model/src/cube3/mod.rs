@@ -23,6 +23,7 @@
 pub mod abc;
 pub mod plan;
 pub mod prp;
+pub mod regs;
 pub mod rpc;
 pub mod shade;
 pub mod surface;

@@ -6,7 +6,8 @@
 
 use super::plan::{Rays, Sweep};
 use crate::common::plan::Order;
-use crate::host::{pack16, Reg, Write};
+use crate::host::{Reg, Write};
+use crate::regmap::pack;
 use scene::Mode;
 
 /// The view registers, in the order of [`ViewRegs::words`].
@@ -100,22 +101,44 @@ impl ViewRegs {
 
     /// The registers' words, in [`REGS`] order.
     pub fn words(&self) -> [u64; 11] {
-        let d = self.dims.map(|n| n as u64);
+        let [nx, ny, nz] = self.dims.map(|n| n as i64);
+        let [u, v, w] = self.axes.map(|a| a as i64);
+        let eye = |r: Reg, i: usize| pack(r, &[("neg_eye", self.neg_eye[i])]);
         [
-            pack16(&[d[0], d[1], d[2]]),
-            pack16(&[self.z0, self.z1, self.stream_z0, self.stream_z1].map(|z| z as u64)),
-            self.axes
-                .iter()
-                .enumerate()
-                .fold(0, |a, (i, &x)| a | (x as u64) << (2 * i)),
-            self.b_u as u64 | (self.slab as u64) << 16,
-            self.dx as i64 as u64,
-            self.dy as i64 as u64,
-            self.neg_eye[0] as u64,
-            self.neg_eye[1] as u64,
-            self.neg_eye[2] as u64,
-            self.slice_beats as u64 | (self.beam_beats as u64) << 32,
-            self.front_to_back as u64 | (self.minip as u64) << 1,
+            pack(Reg::Dims, &[("nx", nx), ("ny", ny), ("nz", nz)]),
+            pack(
+                Reg::Slices,
+                &[
+                    ("z0", self.z0 as i64),
+                    ("z1", self.z1 as i64),
+                    ("stream_z0", self.stream_z0 as i64),
+                    ("stream_z1", self.stream_z1 as i64),
+                ],
+            ),
+            pack(Reg::Axes, &[("u", u), ("v", v), ("w", w)]),
+            pack(
+                Reg::Address,
+                &[("b_u", self.b_u as i64), ("slab", self.slab as i64)],
+            ),
+            pack(Reg::Dx, &[("dx", self.dx as i64)]),
+            pack(Reg::Dy, &[("dy", self.dy as i64)]),
+            eye(Reg::EyeX, 0),
+            eye(Reg::EyeY, 1),
+            eye(Reg::EyeZ, 2),
+            pack(
+                Reg::Beats,
+                &[
+                    ("slice", self.slice_beats as i64),
+                    ("beam", self.beam_beats as i64),
+                ],
+            ),
+            pack(
+                Reg::Order,
+                &[
+                    ("front_to_back", self.front_to_back as i64),
+                    ("minip", self.minip as i64),
+                ],
+            ),
         ]
     }
 
@@ -128,5 +151,48 @@ impl ViewRegs {
                 data,
             })
             .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A perspective sweep's words, worked by hand.
+    #[test]
+    fn the_words_pack_by_hand() {
+        let r = ViewRegs {
+            dims: [10, 20, 30],
+            z0: 1,
+            z1: 28,
+            stream_z0: 0,
+            stream_z1: 29,
+            axes: [2, 0, 1],
+            b_u: 3,
+            slab: 0x1_0002,
+            dx: -2,
+            dy: 5,
+            neg_eye: [-1, 1 << 40, 7],
+            slice_beats: 60,
+            beam_beats: 3,
+            front_to_back: false,
+            minip: true,
+        };
+        assert_eq!(
+            r.words(),
+            [
+                0x001e_0014_000a,
+                0x001d_0000_001c_0001,
+                0b01_00_10,
+                0x1_0002_0003,
+                0xffff_ffff_ffff_fffe,
+                5,
+                u64::MAX,
+                1 << 40,
+                7,
+                0x3_0000_003c,
+                0b10,
+            ]
+        );
     }
 }
