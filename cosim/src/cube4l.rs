@@ -407,72 +407,7 @@ impl Arch for Cube4l {
     }
 
     fn waves(part: &Part, top: &str) -> Vec<Wave> {
-        let under = |prefix: &str, names: &[&str]| -> Vec<String> {
-            names.iter().map(|n| format!("{prefix}.{n}")).collect()
-        };
-        let mut w: Vec<Wave> = vec![(
-            "CFB".into(),
-            under(
-                &format!("{top}.cfb"),
-                &["valid", "n_s[15:0]", "n_beam[15:0]", "n_b[15:0]", "bs"],
-            ),
-        )];
-        for k in 0..part.config.p {
-            let cfb_lane = [
-                "x[15:0]",
-                "y[15:0]",
-                "z[15:0]",
-                "value[15:0]",
-                "address[31:0]",
-                "pad",
-                "halo",
-                "sr",
-                "er",
-                "at_edge",
-                "invalid",
-                "face[2:0]",
-                "dx_neg",
-                "dx_mag[15:0]",
-                "dy_neg",
-                "dy_mag[15:0]",
-            ];
-            w.push((
-                format!("CFB lane {k}"),
-                under(&format!("{top}.cfb.lanes${k}"), &cfb_lane),
-            ));
-            let lane = format!("{top}.lanes${k}");
-            let abc = [
-                "value[15:0]",
-                "o_value[15:0]",
-                "gx_neg",
-                "gx_mag[15:0]",
-                "gy_neg",
-                "gy_mag[15:0]",
-                "gz_neg",
-                "gz_mag[15:0]",
-            ];
-            w.push((
-                format!("ABC gradient {k}"),
-                under(&format!("{lane}.feed.abc"), &abc),
-            ));
-            let shader = ["valid", "r[15:0]", "g[15:0]", "b[15:0]", "a[15:0]"];
-            w.push((
-                format!("Shader {k}"),
-                under(&format!("{lane}.shader"), &shader),
-            ));
-            let mut taps: Vec<String> =
-                (0..9).map(|c| format!("{lane}.taps.a${c}[63:0]")).collect();
-            taps.extend(under(&lane, &["res_valid", "res[63:0]"]));
-            w.push((format!("Compositing lane {k}"), taps));
-            w.push((
-                format!("Pixel out {k}"),
-                under(
-                    &lane,
-                    &["px_valid", "px_x[15:0]", "px_y[15:0]", "px_face[2:0]"],
-                ),
-            ));
-        }
-        w
+        units::waves(part.config.p, top)
     }
 
     fn manifest_part(part: &Part) -> serde_json::Value {

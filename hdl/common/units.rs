@@ -67,10 +67,18 @@ pub enum Seg {
 }
 
 /// The modules of a stage file: those whose instance path matches `path`.
+/// (In a synthesis report's table, `CELL_STAGES`, `file` is the stage's
+/// name and `path` a cell's, without the top.)
 #[derive(Debug, Clone, Copy)]
 pub struct Stage {
     pub path: &'static [Seg],
     pub file: &'static str,
+}
+
+/// The file of the first of `stages` whose path matches the instance
+/// path `parts`.
+pub fn stage_of(stages: &[Stage], parts: &[&str]) -> Option<&'static str> {
+    stages.iter().find(|s| s.matches(parts)).map(|s| s.file)
 }
 
 impl Stage {
@@ -108,10 +116,7 @@ impl Layout {
     /// one module per instance, named by its path (`top$lanes$2$shader$lut`).
     pub fn stage_file(&self, name: &str) -> &'static str {
         let parts: Vec<&str> = name.split('$').collect();
-        self.stages
-            .iter()
-            .find(|s| s.matches(&parts))
-            .map_or(self.other, |s| s.file)
+        stage_of(self.stages, &parts).unwrap_or(self.other)
     }
 }
 
@@ -148,3 +153,35 @@ pub fn lint_waivers(units: &[LeftOut], layout: &Layout) -> String {
     }
     s
 }
+
+/// A signal group of a trace: its name and its signals.
+pub type Wave = (String, Vec<String>);
+
+/// The signals `names` of the scope `prefix` (`top.cfb`), each a name and
+/// its bit range (`("n_s", "[15:0]")`, empty for a bit).
+pub fn under(prefix: &str, names: &[(&str, &str)]) -> Vec<String> {
+    names
+        .iter()
+        .map(|(n, bits)| format!("{prefix}.{n}{bits}"))
+        .collect()
+}
+
+/// The name of a port every architecture's top has, checked against both
+/// tops.
+macro_rules! top_port {
+    ($f:ident) => {{
+        let _ = crate::instance!(crate::cube4l::Pipeline<1, 1, 1>, $f);
+        crate::instance!(crate::cube3::Cube3System<1, 1, 1, 1>, $f)
+    }};
+}
+
+/// The ports of every architecture's top that the harnesses drive and
+/// read: the clock, `start`, the host port (`golden_model::host`), and
+/// the external voxel memory's arrays of a port per module.
+pub const CLOCK: &str = top_port!(clock);
+pub const START: &str = top_port!(start);
+pub const HOST_WRITE: &str = top_port!(host_write);
+pub const HOST_ADDRESS: &str = top_port!(host_address);
+pub const HOST_DATA: &str = top_port!(host_data);
+pub const EXT_ADDR: &str = top_port!(ext_addr);
+pub const EXT_DATA: &str = top_port!(ext_data);

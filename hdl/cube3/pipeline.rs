@@ -105,8 +105,8 @@ pub struct Cube3<const P: usize, const H: usize> {
     /// the leaf stage's register).
     row: [Signal<Local, Bits<32>>; P],
     pub(crate) opacity: [Table<32, OPACITY_BITS>; P],
-    leaf_q: [DFF<Bits<32>>; P],
-    leaf_valid_q: [DFF<Bit>; P],
+    pub(crate) leaf_q: [DFF<Bits<32>>; P],
+    pub(crate) leaf_valid_q: [DFF<Bit>; P],
     /// The ABC units: the gradients, then the shaders.
     pub(crate) abc: AbcUnit<P, H>,
     /// The shaders' value `s >> F` and gradient.

@@ -1,20 +1,26 @@
 //! The Cube-3 units manifest: each optional unit of a [`Cube3System`]
 //! (the configuration that builds it, as [`Units`], its instances, its
 //! stage file), the [`LAYOUT`] of the emitted design in stage files with
-//! its lint waivers, and the pixel bus the flows log, every instance and
-//! port name checked against the rust-hdl structs by
-//! [`instance!`](crate::instance).
+//! its lint waivers, the pixel bus the flows log and the [`waves`] of a
+//! trace, every instance and port name checked against the rust-hdl
+//! structs by [`instance!`](crate::instance).
 
 use super::abc_estimator::AbcEstimator;
 use super::abc_gradient::AbcUnit;
+use super::cfb::BeamFetch;
+use super::compositor::Rpc;
+use super::config::Cube3Config;
 use super::groups::Groups;
+use super::ray_control::RayControl;
 use super::rpc_node::RpcNode;
+use super::schedule::Schedule;
 use super::trilin_lanes::TrilinLanes;
 use super::{Cube3, Cube3System, Cube3SystemConfig};
 use crate::common::shader::Shader;
-use crate::common::units::{Layout, Seg::*, Stage, Unit, TOP};
+use crate::common::units::{under, Layout, Seg::*, Stage, Unit, Wave, TOP};
 use crate::instance;
 use golden_model::cube3::plan::Neighbourhood;
+use rust_hdl::prelude::{Bit, DFF};
 
 /// The structs the names are checked against (any sizes do).
 type System = Cube3System<1, 1, 1, 1>;
@@ -209,6 +215,40 @@ pub const LAYOUT: Layout = Layout {
     waivers: LINT_WAIVERS,
 };
 
+/// The stage of a cell of a synthesis report, from its instance path
+/// without the top (`pipeline.lanes.units$1...`, split at `.` and `$`).
+pub const CELL_STAGES: &[Stage] = &[
+    Stage {
+        path: &[Is(instance!(System, fetch)), Rest],
+        file: "beam_fetch",
+    },
+    Stage {
+        path: &[Is(PIPELINE), Is(instance!(Pipeline, control)), Rest],
+        file: "ray_control",
+    },
+    Stage {
+        path: &[
+            Is(PIPELINE),
+            Is(instance!(Pipeline, lanes)),
+            Is(instance!(TrilinLanes<1, 1>, units)),
+            Rest,
+        ],
+        file: "trilin",
+    },
+    Stage {
+        path: &[Is(PIPELINE), Is(instance!(Pipeline, lanes)), Rest],
+        file: "trilin_lanes",
+    },
+    Stage {
+        path: &[Is(PIPELINE), Is(instance!(Pipeline, rpc)), Rest],
+        file: "rpc",
+    },
+    Stage {
+        path: &[Is(PIPELINE), Rest],
+        file: "cube3",
+    },
+];
+
 /// The lint waivers every emitted Cube-3 system needs beyond those of
 /// every design (`common::units::lint_waivers`).
 const LINT_WAIVERS: &str = r#"// The beam fetch's write addresses and load address are as wide as its
@@ -270,3 +310,107 @@ pub const PIXEL: [&str; 5] = [
     instance!(System, pixel_a),
     instance!(System, has_sample),
 ];
+
+/// The signal groups of a trace of a system built for `c`, under `top`
+/// (the design's scope).
+pub fn waves(c: &Cube3Config, top: &str) -> Vec<Wave> {
+    type Fetch = BeamFetch<1, 1, 1>;
+    type Lanes = TrilinLanes<1, 1>;
+    let fetch = format!("{top}.{}", instance!(System, fetch));
+    let mut w: Vec<Wave> = vec![(
+        "Beam fetch".into(),
+        under(
+            &format!("{fetch}.{}", instance!(Fetch, schedule)),
+            &[
+                (instance!(Schedule, writing), ""),
+                (instance!(Schedule, period), "[15:0]"),
+                (instance!(Schedule, plane), "[15:0]"),
+                (instance!(Schedule, chunk), "[15:0]"),
+                (instance!(Schedule, reading), ""),
+                (instance!(Schedule, ray), "[15:0]"),
+            ],
+        ),
+    )];
+    let mut streams = vec![format!("{fetch}.{}", instance!(Fetch, valid))];
+    let (cur, next) = (instance!(Fetch, cur), instance!(Fetch, next));
+    for i in 0..c.p {
+        streams.push(format!("{fetch}.{cur}${i}[15:0]"));
+        streams.push(format!("{fetch}.{next}${i}[15:0]"));
+    }
+    w.push(("2-DSB streams".into(), streams));
+    let pipe = format!("{top}.{PIPELINE}");
+    type Control = RayControl<1, 1>;
+    w.push((
+        "Ray control".into(),
+        under(
+            &format!("{pipe}.{}", instance!(Pipeline, control)),
+            &[
+                (instance!(Control, first), ""),
+                (instance!(Control, unit_valid), ""),
+                (instance!(Control, unit_first), ""),
+                (instance!(Control, unit_last), ""),
+                (instance!(Control, in_volume), "[7:0]"),
+            ],
+        ),
+    ));
+    let lanes = format!("{pipe}.{}", instance!(Pipeline, lanes));
+    let (abc, shade) = (instance!(Pipeline, abc), instance!(Pipeline, shade));
+    for i in 0..c.p {
+        let mut sigs = vec![
+            format!("{lanes}.{}${i}[15:0]", instance!(Lanes, wx)),
+            format!("{lanes}.{}${i}[15:0]", instance!(Lanes, wy)),
+            format!("{lanes}.{}${i}[31:0]", instance!(Lanes, sample)),
+        ];
+        if c.shading.is_none() {
+            let q = instance!(DFF<Bit>, q);
+            sigs.push(format!(
+                "{pipe}.{}${i}.{q}[31:0]",
+                instance!(Pipeline, leaf_q)
+            ));
+            sigs.push(format!(
+                "{pipe}.{}${i}.{q}",
+                instance!(Pipeline, leaf_valid_q)
+            ));
+        }
+        w.push((format!("TRILIN {i}"), sigs));
+        if c.shading.is_some() {
+            let mut sigs = vec![];
+            if c.abc.is_some() {
+                type Abc = AbcUnit<1, 1>;
+                for g in [
+                    instance!(Abc, centre),
+                    instance!(Abc, gx),
+                    instance!(Abc, gy),
+                    instance!(Abc, gz),
+                ] {
+                    sigs.push(format!("{pipe}.{abc}.{g}${i}[31:0]"));
+                }
+            }
+            for (o, bits) in [
+                (instance!(Shader, r), "[31:0]"),
+                (instance!(Shader, g), "[15:0]"),
+                (instance!(Shader, b), "[15:0]"),
+                (instance!(Shader, a), "[15:0]"),
+                (instance!(Shader, valid), ""),
+            ] {
+                sigs.push(format!("{pipe}.{shade}${i}.{o}{bits}"));
+            }
+            w.push((format!("ABC unit {i}"), sigs));
+        }
+    }
+    w.push((
+        "RPC".into(),
+        under(
+            &format!("{pipe}.{}", instance!(Pipeline, rpc)),
+            &[
+                (instance!(Rpc<1>, first), ""),
+                (instance!(Rpc<1>, last), ""),
+                (instance!(Rpc<1>, done), ""),
+                (instance!(Rpc<1>, pixel_r), "[31:0]"),
+                (instance!(Rpc<1>, pixel_a), "[15:0]"),
+                (instance!(Rpc<1>, has_sample), ""),
+            ],
+        ),
+    ));
+    w
+}

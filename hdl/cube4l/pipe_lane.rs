@@ -103,12 +103,12 @@ pub struct PipeLane<const H: usize> {
     pub px_face: Signal<Out, Bits<3>>,
     pub(crate) feed: LaneFeed<H>,
     pub(crate) shader: Shader,
-    ctl: ControlDelay,
+    pub(crate) ctl: ControlDelay,
     /// The bits a slice or base-plane coordinate of the build's largest
     /// volume can have ([`PipelineConfig::coord_mask`]).
     coord_mask: Constant<Bits<16>>,
     pub(crate) taps: TapNetwork<H>,
-    cells: Select2x2,
+    pub(crate) cells: Select2x2,
     pub(crate) bilinear: Bilinear,
     pub(crate) compositor: Compositor,
 }

@@ -103,7 +103,7 @@ pub struct Pipeline<const P: usize, const A: usize, const H: usize> {
     pub res_valid: [Signal<Out, Bit>; P],
     pub res: [Signal<Out, Bits<64>>; P],
     /// The view registers (`golden_model::cube4l::regs::REGS`).
-    view: Regs<11>,
+    pub(crate) view: Regs<11>,
     pub(crate) cfb: Cfb<P, A>,
     pub(crate) lanes: [PipeLane<H>; P],
     /// With a gradient unit: the CFB's address generator again, without

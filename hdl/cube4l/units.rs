@@ -1,17 +1,21 @@
 //! The Cube-4L units manifest: each optional unit of a [`Pipeline`] (the
 //! configuration that builds it, its instances, its stage file), the
 //! [`LAYOUT`] of the emitted design in stage files with its lint waivers,
-//! and the pixel bus the flows log, every instance and port name checked
-//! against the rust-hdl structs by [`instance!`](crate::instance).
+//! the pixel bus the flows log and the [`waves`] of a trace, every
+//! instance and port name checked against the rust-hdl structs by
+//! [`instance!`](crate::instance).
 
+use super::abc_gradient::AbcGradient;
 use super::cfb::Cfb;
 use super::cfb_lane::CfbLane;
+use super::compositor::Compositor;
 use super::lane_feed::LaneFeed;
 use super::pipe_lane::PipeLane;
+use super::tap_network::TapNetwork;
 use super::{Pipeline, PipelineConfig};
 use crate::common::mode_class::ModeClass;
 use crate::common::shader::Shader;
-use crate::common::units::{Layout, Seg::*, Stage, Unit, TOP};
+use crate::common::units::{under, Layout, Seg::*, Stage, Unit, Wave, TOP};
 use crate::instance;
 
 /// The structs the names are checked against (any sizes do).
@@ -153,6 +157,80 @@ pub const LAYOUT: Layout = Layout {
     waivers: LINT_WAIVERS,
 };
 
+/// The stage of a cell of a synthesis report, from its instance path
+/// without the top (`lanes$0.bilinear.ch$0...`, split at `.` and `$`).
+pub const CELL_STAGES: &[Stage] = &[
+    Stage {
+        path: &[
+            OneOf(CFBS),
+            Is(instance!(Cfb1, lanes)),
+            Any,
+            Is(instance!(CfbLane<1>, div)),
+            Rest,
+        ],
+        file: "divider",
+    },
+    Stage {
+        path: &[OneOf(CFBS), Is(instance!(Cfb1, lead)), Rest],
+        file: "divider",
+    },
+    Stage {
+        path: &[Is(instance!(Top, cfb)), Rest],
+        file: "cfb",
+    },
+    Stage {
+        path: &[Is(instance!(Top, late)), Rest],
+        file: "cfb (late control)",
+    },
+    Stage {
+        path: &[
+            Is(LANES),
+            Any,
+            Is(instance!(Lane, feed)),
+            Is(instance!(LaneFeed<1>, abc)),
+            Rest,
+        ],
+        file: "abc_gradient",
+    },
+    Stage {
+        path: &[Is(LANES), Any, Is(instance!(Lane, feed)), Rest],
+        file: "lane_feed",
+    },
+    Stage {
+        path: &[Is(LANES), Any, Is(instance!(Lane, shader)), Rest],
+        file: "shader",
+    },
+    Stage {
+        path: &[Is(LANES), Any, Is(instance!(Lane, taps)), Rest],
+        file: "tap_network",
+    },
+    Stage {
+        path: &[Is(LANES), Any, Is(instance!(Lane, cells)), Rest],
+        file: "select2x2",
+    },
+    Stage {
+        path: &[Is(LANES), Any, Is(instance!(Lane, bilinear)), Rest],
+        file: "bilinear",
+    },
+    Stage {
+        path: &[Is(LANES), Any, Is(instance!(Lane, compositor)), Rest],
+        file: "compositor",
+    },
+    Stage {
+        path: &[Is(LANES), Any, Is(instance!(Lane, ctl)), Rest],
+        file: "control_delay",
+    },
+    Stage {
+        path: &[Is(LANES), Rest],
+        file: "pipe_lane",
+    },
+    // The host-loaded register file (`common/regs.rs`).
+    Stage {
+        path: &[Is(instance!(Top, view)), Rest],
+        file: "regs",
+    },
+];
+
 /// The lint waivers every emitted Cube-4L design needs beyond those of
 /// every design (`common::units::lint_waivers`).
 const LINT_WAIVERS: &str = r#"// The view registers are 64-bit words of 16-bit, or for the axes 2-bit,
@@ -211,4 +289,125 @@ pub const PIXEL: [&str; 4] = [
     instance!(Top, px_y),
     instance!(Top, px_face),
     instance!(Top, res),
+];
+
+/// The signal groups of a trace of a `p`-lane build, under `top` (the
+/// design's scope).
+pub fn waves(p: u32, top: &str) -> Vec<Wave> {
+    type Lane1 = CfbLane<1>;
+    type Abc = AbcGradient<1>;
+    let cfb = format!("{top}.{}", instance!(Top, cfb));
+    let mut w: Vec<Wave> = vec![(
+        "CFB".into(),
+        under(
+            &cfb,
+            &[
+                (instance!(Cfb1, valid), ""),
+                (instance!(Cfb1, n_s), "[15:0]"),
+                (instance!(Cfb1, n_beam), "[15:0]"),
+                (instance!(Cfb1, n_b), "[15:0]"),
+                (instance!(Cfb1, bs), ""),
+            ],
+        ),
+    )];
+    for k in 0..p {
+        let cfb_lane = [
+            (instance!(Lane1, x), "[15:0]"),
+            (instance!(Lane1, y), "[15:0]"),
+            (instance!(Lane1, z), "[15:0]"),
+            (instance!(Lane1, value), "[15:0]"),
+            (instance!(Lane1, address), "[31:0]"),
+            (instance!(Lane1, pad), ""),
+            (instance!(Lane1, halo), ""),
+            (instance!(Lane1, sr), ""),
+            (instance!(Lane1, er), ""),
+            (instance!(Lane1, at_edge), ""),
+            (instance!(Lane1, invalid), ""),
+            (instance!(Lane1, face), "[2:0]"),
+            (instance!(Lane1, dx_neg), ""),
+            (instance!(Lane1, dx_mag), "[15:0]"),
+            (instance!(Lane1, dy_neg), ""),
+            (instance!(Lane1, dy_mag), "[15:0]"),
+        ];
+        w.push((
+            format!("CFB lane {k}"),
+            under(&format!("{cfb}.{}${k}", instance!(Cfb1, lanes)), &cfb_lane),
+        ));
+        let lane = format!("{top}.{LANES}${k}");
+        let abc = [
+            (instance!(Abc, value), "[15:0]"),
+            (instance!(Abc, o_value), "[15:0]"),
+            (instance!(Abc, gx_neg), ""),
+            (instance!(Abc, gx_mag), "[15:0]"),
+            (instance!(Abc, gy_neg), ""),
+            (instance!(Abc, gy_mag), "[15:0]"),
+            (instance!(Abc, gz_neg), ""),
+            (instance!(Abc, gz_mag), "[15:0]"),
+        ];
+        let feed = instance!(Lane, feed);
+        let abc_unit = instance!(LaneFeed<1>, abc);
+        w.push((
+            format!("ABC gradient {k}"),
+            under(&format!("{lane}.{feed}.{abc_unit}"), &abc),
+        ));
+        let shader = [
+            (instance!(Shader, valid), ""),
+            (instance!(Shader, r), "[15:0]"),
+            (instance!(Shader, g), "[15:0]"),
+            (instance!(Shader, b), "[15:0]"),
+            (instance!(Shader, a), "[15:0]"),
+        ];
+        w.push((
+            format!("Shader {k}"),
+            under(&format!("{lane}.{}", instance!(Lane, shader)), &shader),
+        ));
+        let (taps, a) = (instance!(Lane, taps), instance!(TapNetwork<1>, a));
+        let mut signals: Vec<String> = (0..9)
+            .map(|c| format!("{lane}.{taps}.{a}${c}[63:0]"))
+            .collect();
+        signals.extend(under(
+            &lane,
+            &[
+                (instance!(Lane, res_valid), ""),
+                (instance!(Lane, res), "[63:0]"),
+            ],
+        ));
+        w.push((format!("Compositing lane {k}"), signals));
+        w.push((
+            format!("Pixel out {k}"),
+            under(
+                &lane,
+                &[
+                    (instance!(Lane, px_valid), ""),
+                    (instance!(Lane, px_x), "[15:0]"),
+                    (instance!(Lane, px_y), "[15:0]"),
+                    (instance!(Lane, px_face), "[2:0]"),
+                ],
+            ),
+        ));
+    }
+    w
+}
+
+/// The compositor's ports as `cube stage-vectors` drives and reads it on
+/// its own: its clock; the accumulated and the new RGBA, the sample's
+/// valid and the order register; the composited RGBA.
+pub const COMPOSITOR_CLOCK: &str = instance!(Compositor, clock);
+pub const COMPOSITOR_INPUTS: [&str; 10] = [
+    instance!(Compositor, acc_r),
+    instance!(Compositor, acc_g),
+    instance!(Compositor, acc_b),
+    instance!(Compositor, acc_a),
+    instance!(Compositor, new_r),
+    instance!(Compositor, new_g),
+    instance!(Compositor, new_b),
+    instance!(Compositor, new_a),
+    instance!(Compositor, new_valid),
+    instance!(Compositor, order),
+];
+pub const COMPOSITOR_OUTPUTS: [&str; 4] = [
+    instance!(Compositor, out_r),
+    instance!(Compositor, out_g),
+    instance!(Compositor, out_b),
+    instance!(Compositor, out_a),
 ];
