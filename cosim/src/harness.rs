@@ -25,7 +25,9 @@
 //! harness reads its run's parameters from files, so one build serves every
 //! run of a design.
 
-use hdl::common::units::{CLOCK, EXT_ADDR, EXT_DATA, HOST_ADDRESS, HOST_DATA, HOST_WRITE, START};
+use hdl::common::units::{
+    CLOCK, EXT_ADDR, EXT_DATA, HOST_ADDRESS, HOST_DATA, HOST_WRITE, START, TOP,
+};
 use std::hash::{Hash, Hasher};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -80,19 +82,20 @@ pub struct Port {
     pub input: bool,
 }
 
+/// Whether a module's text after `module ` is the top's.
+fn is_top(m: &str) -> bool {
+    m.strip_prefix(TOP).is_some_and(|r| r.starts_with('('))
+}
+
 /// The ports of rust-hdl's `top` module in declaration order, without the
 /// clock.
 pub fn ports(verilog: &str) -> Result<Vec<Port>, String> {
     let top = verilog
         .split("\nmodule ")
-        .find(|m| m.starts_with("top("))
-        .or_else(|| {
-            verilog
-                .strip_prefix("module ")
-                .filter(|m| m.starts_with("top("))
-        })
+        .find(|m| is_top(m))
+        .or_else(|| verilog.strip_prefix("module ").filter(|m| is_top(m)))
         .ok_or("no `module top(` in the design's Verilog")?;
-    let header = &top[4..top.find(");").ok_or("unterminated port list")?];
+    let header = &top[TOP.len() + 1..top.find(");").ok_or("unterminated port list")?];
     let names: Vec<&str> = header.split(',').map(str::trim).collect();
     let mut out = Vec::new();
     for name in names.iter().filter(|n| **n != CLOCK) {

@@ -175,11 +175,13 @@ macro_rules! top_port {
     }};
 }
 
-/// The ports of every architecture's top that the harnesses drive and
-/// read: the clock, `start`, the host port (`golden_model::host`), and
-/// the external voxel memory's arrays of a port per module.
+/// The ports of every architecture's top that the harnesses and wrappers
+/// drive and read: the clock, `start`, the load port's enable, the host
+/// port (`golden_model::host`), and the external voxel memory's arrays of
+/// a port per module.
 pub const CLOCK: &str = top_port!(clock);
 pub const START: &str = top_port!(start);
+pub const LOAD_ENABLE: &str = top_port!(load_enable);
 pub const HOST_WRITE: &str = top_port!(host_write);
 pub const HOST_ADDRESS: &str = top_port!(host_address);
 pub const HOST_DATA: &str = top_port!(host_data);
