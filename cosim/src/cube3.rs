@@ -26,6 +26,7 @@ use hdl::common::mode_class::ModeClass;
 use hdl::common::shader::{normal_bits_refusal, normal_suffix, unlit_normal_bits};
 use hdl::common::width_refusal;
 use hdl::cube3::config::Cube3Sizes;
+use hdl::cube3::units::{self, Units};
 use hdl::cube3::{Cube3System, Cube3SystemConfig};
 use rust_hdl::prelude::*;
 use scene::volume::Volume;
@@ -189,13 +190,28 @@ impl Cube3Build {
         }
     }
 
+    /// The units the build has.
+    fn units(&self) -> Units {
+        let shaders = ModeClass::of(self.mode) == ModeClass::Over;
+        Units {
+            perspective: self.perspective,
+            gradient: shaders && (self.shading || self.gradient_opacity),
+            shaders,
+            lighting: self.shading,
+            gradient_opacity: self.gradient_opacity,
+            xray: self.mode == Mode::Xray,
+            n26: self.neighbourhood == Neighbourhood::N26,
+            n10: self.neighbourhood == Neighbourhood::N10,
+        }
+    }
+
     /// What the build's memories and tables are sized for.
     pub fn sizes(&self) -> Cube3Sizes {
         Cube3Sizes {
             n: self.n,
             p: self.p,
             perspective: self.perspective,
-            gradients: Units::of_build(self).gradient,
+            gradients: self.units().gradient,
             voxel_bits: self.voxel_bits,
         }
     }
@@ -219,196 +235,9 @@ pub struct Part {
     pub sizes: Cube3Sizes,
 }
 
-/// The file (one per stage) of a Cube-3 system's module.
-fn stage_file(name: &str) -> &'static str {
-    let parts: Vec<&str> = name.split('$').collect();
-    match parts.as_slice() {
-        ["top"] => "top.v",
-        ["top", "fetch", ..] => "beam_fetch.v",
-        ["top", "pipeline", "control", ..] => "ray_control.v",
-        ["top", "pipeline", "lanes", "units", ..] => "trilin.v",
-        ["top", "pipeline", "lanes", ..] => "trilin_lanes.v",
-        ["top", "pipeline", "rpc", ..] => "rpc.v",
-        ["top", "pipeline", "abc", ..] => "abc_unit.v",
-        ["top", "pipeline", "shade", ..] => "shader.v",
-        _ => "cube3.v",
-    }
-}
-
-/// The lint waivers every emitted Cube-3 system needs beyond those of
-/// every design (`verilog::lint_waivers`).
-pub const LINT_WAIVERS: &str = r#"// The beam fetch's write addresses and load address are as wide as its
-// largest memory: each module and buffer uses the low bits.
-lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'write_address$*"
-lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'load_address'*"
-// A 2-DSB word and the X-ray opacity table store only the bits a voxel
-// (an opacity) has: the rest of the 16- or 32-bit datapath word is unread.
-lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'write_data'*"
-// The schedule's chunk counter (and its next value) is as wide as its
-// 24-bit register field; the group tables take its low GROUP_BITS, a
-// parallel chunk its low 16.
-lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'chunk'*"
-lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'chunk_next'*"
-// The opacity table, as long as the scene's, takes the low bits of a unit's
-// opacity row.
-lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not used: 'row$*"
-// The ray control's delayed word carries segment, ray, scanline and valid
-// in 64 bits; the bits above valid are spare.
-lint_off -rule UNUSEDSIGNAL -file "*ray_control.v" -match "*Bits of signal are not used: 'late$data_out'*"
-// The inside and inner bits have one lane bit per unit of up to 8; with
-// fewer units the lane bits above them are unused.
-lint_off -rule UNUSEDPARAM -file "*ray_control.v" -match "*Parameter is not used: 'lane_bit$*"
-lint_off -rule UNUSEDPARAM -file "*cube3.v" -match "*Parameter is not used: 'lane_bit$*"
-lint_off -rule UNUSEDPARAM -file "*cube3.v" -match "*Parameter is not used: 'inner_bit$*"
-// One flag word rides beside the units: the leaf stage or the shaders take
-// its inside and inner bits, the RPC one clock later its valid, first and
-// last bits;
-lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not used: 'rpc_flags_q$q'*"
-// its delay line through the ABC units stores only those bits;
-lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not used: 'write_data'*"
-// and after the accumulator only the last-segment flag is read.
-lint_off -rule UNUSEDSIGNAL -file "*rpc.v" -match "*Bits of signal are not used: 'node_flags_q$*$q'*"
-// The shaders' value is the sample's integer part, voxel bits wide: the
-// top bits of s >> F are zero.
-lint_off -rule UNUSEDSIGNAL -file "*cube3.v" -match "*Bits of signal are not used: 'index$*"
-// The host port carries 64-bit words: each view register block keeps the
-// fields its stage reads, each view table the bits of its entries, and a
-// table's read address is as wide as its largest view's (the low bits
-// address its words);
-lint_off -rule UNUSEDSIGNAL -file "*.v" -match "*Bits of signal are not used: 'host_data'*"
-lint_off -rule UNUSEDSIGNAL -file "*.v" -match "*Bits of signal are not used: 'regs$q$*'*"
-lint_off -rule UNUSEDSIGNAL -file "*.v" -match "*Bits of signal are not used: 'address'*"
-// the entry arithmetic of the templates and rows is 32 bits wide.
-lint_off -rule UNUSEDSIGNAL -file "*ray_control.v" -match "*Bits of signal are not used: 'w?_entry'*"
-lint_off -rule UNUSEDSIGNAL -file "*beam_fetch.v" -match "*Bits of signal are not used: 'row_entry'*"
-// Each lane's sample-plane history offers all 27 taps; the neighbouring
-// lanes read their middle ones (plane k), and only the first and the last
-// lane's taps of the next and previous segment cross to the other end.
-lint_off -rule UNUSEDSIGNAL -file "*abc_unit.v" -match "*Signal is not used: 'lanes$*$t*"
-"#;
-
-/// The units a Cube-3 build has.
-struct Units {
-    perspective: bool,
-    gradient: bool,
-    /// The shaders (composite and first-opaque), with lighting and
-    /// gradient opacity.
-    shaders: bool,
-    lighting: bool,
-    gradient_opacity: bool,
-    xray: bool,
-    /// The 26-neighbourhood's sums, the 10's basis (with the gradient
-    /// units).
-    n26: bool,
-    n10: bool,
-}
-
-impl Units {
-    fn of_build(b: &Cube3Build) -> Units {
-        let shaders = ModeClass::of(b.mode) == ModeClass::Over;
-        Units {
-            perspective: b.perspective,
-            gradient: shaders && (b.shading || b.gradient_opacity),
-            shaders,
-            lighting: b.shading,
-            gradient_opacity: b.gradient_opacity,
-            xray: b.mode == Mode::Xray,
-            n26: b.neighbourhood == Neighbourhood::N26,
-            n10: b.neighbourhood == Neighbourhood::N10,
-        }
-    }
-
-    fn of_system(c: &Cube3SystemConfig) -> Units {
-        let p = &c.pipeline;
-        Units {
-            perspective: p.perspective,
-            gradient: p.abc.is_some(),
-            shaders: p.shading.is_some(),
-            lighting: p.shading.as_ref().is_some_and(|s| s.lighting.is_some()),
-            gradient_opacity: p
-                .shading
-                .as_ref()
-                .is_some_and(|s| s.opacity.as_ref().and_then(|o| o.gm_shift).is_some()),
-            xray: p.opacity.is_some(),
-            n26: p
-                .abc
-                .as_ref()
-                .is_some_and(|a| a.neighbourhood == Neighbourhood::N26),
-            n10: p
-                .abc
-                .as_ref()
-                .is_some_and(|a| a.neighbourhood == Neighbourhood::N10),
-        }
-    }
-
-    /// The units left out.
-    fn left_out(&self) -> Vec<LeftOut> {
-        let mut v = vec![];
-        if !self.perspective {
-            v.push(LeftOut {
-                name: "de-fanning (a parallel view's beams shift as a whole: no group tables, one template entry a plane)",
-                instances: &["groups", "group_x$*"],
-            });
-        }
-        if !self.gradient {
-            v.push(LeftOut {
-                name: "abc_gradient_units (no gradient: MIP, MinIP, X-ray, or neither shading nor gradient opacity)",
-                instances: &["abc"],
-            });
-        } else {
-            if !self.n26 {
-                v.push(LeftOut {
-                    name: "abc_26_sums (the 26-neighbourhood's weighted differences)",
-                    instances: &["sums26"],
-                });
-            }
-            if !self.n10 {
-                v.push(LeftOut {
-                    name: "abc_10_basis (the 10-neighbourhood's lerps, basis correction and registers)",
-                    instances: &["basis10", "regs10"],
-                });
-            }
-        }
-        if self.shaders {
-            v.push(LeftOut {
-                name: "leaf_stage (composite and first-opaque take the shaders; disabled by constants, for synthesis to remove)",
-                instances: &[],
-            });
-            if !self.lighting {
-                v.push(LeftOut {
-                    name: "lighting (the normal's dot products, their tables and registers)",
-                    instances: &["lighting", "normal"],
-                });
-            }
-            if !self.gradient_opacity {
-                v.push(LeftOut {
-                    name: "gradient_opacity (the magnitude bin and its table)",
-                    instances: &["alpha_gm", "gm_bin"],
-                });
-            }
-        } else {
-            v.push(LeftOut {
-                name: "shaders (MIP, MinIP and X-ray take the leaf stage)",
-                instances: &["shade$*"],
-            });
-            v.push(LeftOut {
-                name: "rpc_over_operator_multipliers",
-                instances: &["ch_r", "ch_g", "ch_b", "ch_a"],
-            });
-        }
-        if !self.xray {
-            v.push(LeftOut {
-                name: "opacity_table (X-ray only)",
-                instances: &["opacity"],
-            });
-        }
-        v
-    }
-}
-
 /// The units a Cube-3 system leaves out.
 pub fn left_out(c: &Cube3SystemConfig) -> Vec<LeftOut> {
-    Units::of_system(c).left_out()
+    hdl::common::units::left_out(units::UNITS, &Units::of_system(c))
 }
 
 /// The scene's base planes, each with the system that renders it, for a
@@ -567,21 +396,7 @@ impl Arch for Cube3 {
     const NAME: &'static str = "cube3";
     const TITLE: &'static str = "Cube-3";
     const PART: &'static str = "base_plane";
-    const LAYOUT: Layout = Layout {
-        files: &[
-            "top.v",
-            "beam_fetch.v",
-            "ray_control.v",
-            "trilin_lanes.v",
-            "trilin.v",
-            "abc_unit.v",
-            "shader.v",
-            "cube3.v",
-            "rpc.v",
-        ],
-        stage_file,
-        waivers: LINT_WAIVERS,
-    };
+    const LAYOUT: Layout = units::LAYOUT;
     type Part = Part;
     type Base = BasePlane;
 
@@ -670,7 +485,7 @@ impl Arch for Cube3 {
     }
 
     fn left_out(config: &Cube3Build) -> Vec<LeftOut> {
-        Units::of_build(config).left_out()
+        hdl::common::units::left_out(units::UNITS, &config.units())
     }
 
     fn external(config: &Cube3Build) -> bool {
@@ -701,14 +516,13 @@ impl Arch for Cube3 {
     fn bus(part: &Part) -> (Stop, Vec<Group>) {
         let p = &part.config.pipeline;
         let stop = Stop::Pulses {
-            output: "done".into(),
+            output: units::PIXEL_VALID.into(),
             count: (p.rays * p.scanlines) as u64,
             limit: part.config.clocks() as u64 + 1000,
         };
-        let fields = ["pixel_r", "pixel_g", "pixel_b", "pixel_a", "has_sample"];
         let groups = vec![Group {
-            when: Some("done".into()),
-            fields: fields.map(String::from).to_vec(),
+            when: Some(units::PIXEL_VALID.into()),
+            fields: units::PIXEL.map(String::from).to_vec(),
         }];
         (stop, groups)
     }
@@ -751,7 +565,7 @@ impl Arch for Cube3 {
             let v: Vec<u64> = rec
                 .values
                 .iter()
-                .zip(["pixel_r", "pixel_g", "pixel_b", "pixel_a", "has_sample"])
+                .zip(units::PIXEL)
                 .map(|(v, name)| v.ok_or_else(|| format!("clock {}: {name} is unknown", rec.clock)))
                 .collect::<Result<_, _>>()?;
             let (u, vv) = (c.fetch.u0 + (n % r) as i32, c.fetch.v0 + (n / r) as i32);
@@ -847,86 +661,7 @@ impl Arch for Cube3 {
     }
 
     fn waves(part: &Part, top: &str) -> Vec<Wave> {
-        let c = &part.config.pipeline;
-        let p = c.p;
-        let under = |prefix: &str, names: &[&str]| -> Vec<String> {
-            names.iter().map(|n| format!("{prefix}.{n}")).collect()
-        };
-        let sch = format!("{top}.fetch.schedule");
-        let mut w: Vec<Wave> = vec![(
-            "Beam fetch".into(),
-            under(
-                &sch,
-                &[
-                    "writing",
-                    "period[15:0]",
-                    "plane[15:0]",
-                    "chunk[15:0]",
-                    "reading",
-                    "ray[15:0]",
-                    "segment[15:0]",
-                ],
-            ),
-        )];
-        let mut streams = vec![format!("{top}.fetch.valid")];
-        for i in 0..p {
-            streams.push(format!("{top}.fetch.cur${i}[15:0]"));
-            streams.push(format!("{top}.fetch.next${i}[15:0]"));
-        }
-        w.push(("2-DSB streams".into(), streams));
-        let pipe = format!("{top}.pipeline");
-        w.push((
-            "Ray control".into(),
-            under(
-                &format!("{pipe}.control"),
-                &[
-                    "first",
-                    "unit_valid",
-                    "unit_first",
-                    "unit_last",
-                    "in_volume[7:0]",
-                ],
-            ),
-        ));
-        for i in 0..p {
-            let mut sigs = vec![
-                format!("{pipe}.lanes.wx${i}[15:0]"),
-                format!("{pipe}.lanes.wy${i}[15:0]"),
-                format!("{pipe}.lanes.sample${i}[31:0]"),
-            ];
-            if c.shading.is_none() {
-                sigs.push(format!("{pipe}.leaf_q${i}.q[31:0]"));
-                sigs.push(format!("{pipe}.leaf_valid_q${i}.q"));
-            }
-            w.push((format!("TRILIN {i}"), sigs));
-            if c.shading.is_some() {
-                let mut sigs = vec![];
-                if c.abc.is_some() {
-                    for g in ["centre", "gx", "gy", "gz"] {
-                        sigs.push(format!("{pipe}.abc.{g}${i}[31:0]"));
-                    }
-                }
-                for o in ["r[31:0]", "g[15:0]", "b[15:0]", "a[15:0]", "valid"] {
-                    sigs.push(format!("{pipe}.shade${i}.{o}"));
-                }
-                w.push((format!("ABC unit {i}"), sigs));
-            }
-        }
-        w.push((
-            "RPC".into(),
-            under(
-                &format!("{pipe}.rpc"),
-                &[
-                    "first",
-                    "last",
-                    "done",
-                    "pixel_r[31:0]",
-                    "pixel_a[15:0]",
-                    "has_sample",
-                ],
-            ),
-        ));
-        w
+        units::waves(&part.config.pipeline, top)
     }
 
     fn manifest_part(part: &Part) -> serde_json::Value {

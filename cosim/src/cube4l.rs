@@ -16,8 +16,8 @@ use golden_model::cube4l::regs::ViewRegs;
 use golden_model::cube4l::{render_sweep, BasePlane, Frame, Stats};
 use golden_model::host::Write;
 use hdl::common::lanes::{with_p, ForP};
-use hdl::common::mode_class::ModeClass;
 use hdl::cube4l::config::unpack;
+use hdl::cube4l::units;
 use hdl::cube4l::{Pipeline, PipelineConfig};
 use rust_hdl::prelude::*;
 use scene::volume::Volume;
@@ -49,115 +49,9 @@ impl Part {
     }
 }
 
-/// The file (one per stage) that holds module `name`. rust-hdl emits one
-/// module per instance, named by its path (`top$lanes$2$shader$lut`), so
-/// each stage's file holds that stage's modules of every pipeline.
-fn stage_file(name: &str) -> &'static str {
-    let parts: Vec<&str> = name.split('$').collect();
-    match parts.as_slice() {
-        ["top"] => "top.v",
-        ["top", "cfb" | "late", "lanes", _, "div", ..] | ["top", "cfb" | "late", "lead", ..] => {
-            "divider.v"
-        }
-        ["top", "cfb" | "late", ..] => "cfb.v",
-        ["top", "lanes", _, "feed", "abc", ..] => "abc_gradient.v",
-        ["top", "lanes", _, "shader", ..] => "shader.v",
-        ["top", "lanes", _, "taps", ..] => "tap_network.v",
-        ["top", "lanes", _, "bilinear", ..] => "bilinear.v",
-        ["top", "lanes", _, "compositor", ..] => "compositor.v",
-        _ => "pipe_lane.v",
-    }
-}
-
-/// The lint waivers every emitted Cube-4L design needs beyond those of
-/// every design (`verilog::lint_waivers`).
-pub const LINT_WAIVERS: &str = r#"// The view registers are 64-bit words of 16-bit, or for the axes 2-bit,
-// fields that the host writes; each stage reads the fields it needs, see
-// docs/registers.md.
-lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'dims'*"
-lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'slices'*"
-lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'axes'*"
-lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'address_reg'*"
-lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'beats'*"
-lint_off -rule UNUSEDSIGNAL -file "*abc_gradient.v" -match "*Bits of signal are not used: 'beats'*"
-lint_off -rule UNUSEDSIGNAL -file "*tap_network.v" -match "*Bits of signal are not used: 'beats'*"
-lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*Bits of signal are not used: 'dims'*"
-lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*Bits of signal are not used: 'order'*"
-lint_off -rule UNUSEDSIGNAL -file "*compositor.v" -match "*Bits of signal are not used: 'order'*"
-// dx and dy are 64-bit two's-complement words; their magnitude is at most
-// one in the sweep's fraction bits, so a lane copies the sign and the low
-// half only.
-lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'dx'*"
-lint_off -rule UNUSEDSIGNAL -file "*cfb.v" -match "*Bits of signal are not used: 'dy'*"
-// Each CFB lane's dataset z and memory address are observability outputs:
-// the CFB testbench compares them with the golden model's stream, and the
-// waveforms show them; the pipeline itself needs neither.
-lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'cfb$z$*'*"
-lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'cfb$address$*'*"
-// The late CFB, with a gradient unit, recomputes the control only: its voxel,
-// memory port, sweep status and observability outputs are unread.
-lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$value$*'*"
-lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$ext_addr$*'*"
-lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$busy'*"
-lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$n_*'*"
-lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$bs'*"
-lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$z$*'*"
-lint_off -rule UNUSEDSIGNAL -file "*top.v" -match "*Signal is not used: 'late$address$*'*"
-// Delay lines and memory modules store only the bits the scene can set: the
-// voxel bits of a voxel, and four channels of RGBA bits in the 16-bit slots
-// of a composited word.
-lint_off -rule UNUSEDSIGNAL -file "*" -match "*Bits of signal are not used: 'write_data'*"
-// The bilinear unit's four channels share one 32-bit datapath, which X-ray
-// needs for its sum in channel 0; channels 1-3 carry 16-bit values.
-lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*bilinear$out$*"
-// The sight-ray divider's last stage leaves the remainders and the
-// denominator behind: the quotients are all it answers.
-lint_off -rule UNUSEDSIGNAL -file "*divider.v" -match "*Signal is not used: 'stages$16$*'*"
-// The shader's r is as wide as Cube-3's RPC leaves (32 bits); a Cube-4L lane
-// takes its low 16.
-lint_off -rule UNUSEDSIGNAL -file "*pipe_lane.v" -match "*Bits of signal are not used: 'shader$r'*"
-"#;
-
-/// The units a build leaves out.
+/// The units a build leaves out (hdl's [`units::UNITS`]).
 pub fn left_out(config: &PipelineConfig) -> Vec<LeftOut> {
-    let mut v = Vec::new();
-    if !config.gradient() {
-        v.push(LeftOut {
-            name: "abc_gradient",
-            instances: &["abc", "late"],
-        });
-    }
-    if !config.shading {
-        v.push(LeftOut {
-            name: "lighting (the normal's dot products, their tables and registers)",
-            instances: &["lighting", "normal"],
-        });
-    }
-    if config.mode == ModeClass::Scalar {
-        v.push(LeftOut {
-            name: "classification_table",
-            instances: &["lut"],
-        });
-    }
-    if !config.gradient_opacity {
-        v.push(LeftOut {
-            name: "gradient_opacity (the magnitude bin and its table)",
-            instances: &["alpha_gm", "gm_bin"],
-        });
-    }
-    if config.mode != ModeClass::Over {
-        v.push(LeftOut {
-            name: "shading_and_weighting_multipliers",
-            instances: &["lit_r", "lit_g", "lit_b", "mul_r", "mul_g", "mul_b"],
-        });
-    }
-    if !config.perspective {
-        v.push(LeftOut {
-            name: "sight_ray_divider",
-            instances: &["div", "lead"],
-        });
-    }
-    v
+    hdl::common::units::left_out(units::UNITS, config)
 }
 
 /// Build the pipeline for `P` lanes and emit its Verilog.
@@ -293,21 +187,7 @@ impl Arch for Cube4l {
     const NAME: &'static str = "cube4l";
     const TITLE: &'static str = "Cube-4L";
     const PART: &'static str = "sweep";
-    const LAYOUT: Layout = Layout {
-        files: &[
-            "top.v",
-            "cfb.v",
-            "divider.v",
-            "abc_gradient.v",
-            "shader.v",
-            "pipe_lane.v",
-            "tap_network.v",
-            "bilinear.v",
-            "compositor.v",
-        ],
-        stage_file,
-        waivers: LINT_WAIVERS,
-    };
+    const LAYOUT: Layout = units::LAYOUT;
     type Config = PipelineConfig;
     type Part = Part;
     type Base = BasePlane;
@@ -392,16 +272,14 @@ impl Arch for Cube4l {
     fn bus(part: &Part) -> (Stop, Vec<Group>) {
         let beats = part.beats();
         let stop = Stop::Pulses {
-            output: "res_beat$0".into(),
+            output: units::BEAT.into(),
             count: beats,
             limit: 2 * beats + 1000,
         };
         let groups = (0..part.config.p)
             .map(|k| Group {
-                when: Some(format!("px_valid${k}")),
-                fields: ["px_x", "px_y", "px_face", "res"]
-                    .map(|f| format!("{f}${k}"))
-                    .to_vec(),
+                when: Some(format!("{}${k}", units::PIXEL_VALID)),
+                fields: units::PIXEL.map(|f| format!("{f}${k}")).to_vec(),
             })
             .collect();
         (stop, groups)
@@ -529,72 +407,7 @@ impl Arch for Cube4l {
     }
 
     fn waves(part: &Part, top: &str) -> Vec<Wave> {
-        let under = |prefix: &str, names: &[&str]| -> Vec<String> {
-            names.iter().map(|n| format!("{prefix}.{n}")).collect()
-        };
-        let mut w: Vec<Wave> = vec![(
-            "CFB".into(),
-            under(
-                &format!("{top}.cfb"),
-                &["valid", "n_s[15:0]", "n_beam[15:0]", "n_b[15:0]", "bs"],
-            ),
-        )];
-        for k in 0..part.config.p {
-            let cfb_lane = [
-                "x[15:0]",
-                "y[15:0]",
-                "z[15:0]",
-                "value[15:0]",
-                "address[31:0]",
-                "pad",
-                "halo",
-                "sr",
-                "er",
-                "at_edge",
-                "invalid",
-                "face[2:0]",
-                "dx_neg",
-                "dx_mag[15:0]",
-                "dy_neg",
-                "dy_mag[15:0]",
-            ];
-            w.push((
-                format!("CFB lane {k}"),
-                under(&format!("{top}.cfb.lanes${k}"), &cfb_lane),
-            ));
-            let lane = format!("{top}.lanes${k}");
-            let abc = [
-                "value[15:0]",
-                "o_value[15:0]",
-                "gx_neg",
-                "gx_mag[15:0]",
-                "gy_neg",
-                "gy_mag[15:0]",
-                "gz_neg",
-                "gz_mag[15:0]",
-            ];
-            w.push((
-                format!("ABC gradient {k}"),
-                under(&format!("{lane}.feed.abc"), &abc),
-            ));
-            let shader = ["valid", "r[15:0]", "g[15:0]", "b[15:0]", "a[15:0]"];
-            w.push((
-                format!("Shader {k}"),
-                under(&format!("{lane}.shader"), &shader),
-            ));
-            let mut taps: Vec<String> =
-                (0..9).map(|c| format!("{lane}.taps.a${c}[63:0]")).collect();
-            taps.extend(under(&lane, &["res_valid", "res[63:0]"]));
-            w.push((format!("Compositing lane {k}"), taps));
-            w.push((
-                format!("Pixel out {k}"),
-                under(
-                    &lane,
-                    &["px_valid", "px_x[15:0]", "px_y[15:0]", "px_face[2:0]"],
-                ),
-            ));
-        }
-        w
+        units::waves(part.config.p, top)
     }
 
     fn manifest_part(part: &Part) -> serde_json::Value {

@@ -6,6 +6,7 @@
 use crate::arch::Arch;
 use crate::archs::LAYOUTS;
 use crate::verilog::{names, wrapper, write_stage_files};
+use hdl::common::units::TOP;
 use scene::{Camera, Scene};
 use std::path::Path;
 
@@ -210,7 +211,7 @@ pub fn write_export<A: Arch>(
             "architecture": A::NAME,
             "configuration": A::config_name(build),
             "generator": format!("cube {} with rust-hdl 0.46", env!("CARGO_PKG_VERSION")),
-            "top": "top",
+            "top": TOP,
             "integration_top": integration_top::<A>(build),
             "parameters": A::manifest_parameters(build),
             "units_left_out": names(&left_out),

@@ -15,7 +15,7 @@ use std::path::{Path, PathBuf};
 pub const MARK: &str = "[*] written by cube";
 
 /// A signal group of a save file: its name and signals.
-pub type Wave = (String, Vec<String>);
+pub use hdl::common::units::Wave;
 
 /// Pixels of GTKWave's wave pane at the save file's window size (1400
 /// wide, less the signal list), which the zoom fills.

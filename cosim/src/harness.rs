@@ -25,6 +25,9 @@
 //! harness reads its run's parameters from files, so one build serves every
 //! run of a design.
 
+use hdl::common::units::{
+    CLOCK, EXT_ADDR, EXT_DATA, HOST_ADDRESS, HOST_DATA, HOST_WRITE, START, TOP,
+};
 use std::hash::{Hash, Hasher};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -79,22 +82,23 @@ pub struct Port {
     pub input: bool,
 }
 
+/// Whether a module's text after `module ` is the top's.
+fn is_top(m: &str) -> bool {
+    m.strip_prefix(TOP).is_some_and(|r| r.starts_with('('))
+}
+
 /// The ports of rust-hdl's `top` module in declaration order, without the
 /// clock.
 pub fn ports(verilog: &str) -> Result<Vec<Port>, String> {
     let top = verilog
         .split("\nmodule ")
-        .find(|m| m.starts_with("top("))
-        .or_else(|| {
-            verilog
-                .strip_prefix("module ")
-                .filter(|m| m.starts_with("top("))
-        })
+        .find(|m| is_top(m))
+        .or_else(|| verilog.strip_prefix("module ").filter(|m| is_top(m)))
         .ok_or("no `module top(` in the design's Verilog")?;
-    let header = &top[4..top.find(");").ok_or("unterminated port list")?];
+    let header = &top[TOP.len() + 1..top.find(");").ok_or("unterminated port list")?];
     let names: Vec<&str> = header.split(',').map(str::trim).collect();
     let mut out = Vec::new();
-    for name in names.iter().filter(|n| **n != "clock") {
+    for name in names.iter().filter(|n| **n != CLOCK) {
         let decl = top
             .lines()
             .map(str::trim)
@@ -132,7 +136,7 @@ pub fn start_only(ports: &[Port], t: usize) -> Vec<u64> {
     ports
         .iter()
         .filter(|p| p.input)
-        .map(|p| (p.name == "start" && t == 0) as u64)
+        .map(|p| (p.name == START && t == 0) as u64)
         .collect()
 }
 
@@ -172,10 +176,10 @@ fn host_vector(ports: &[Port], w: Option<&golden_model::host::Write>, start: boo
         .iter()
         .filter(|p| p.input)
         .map(|p| match (p.name.as_str(), w) {
-            ("host_write", Some(_)) => 1,
-            ("host_address", Some(w)) => w.address as u64,
-            ("host_data", Some(w)) => w.data,
-            ("start", None) => start as u64,
+            (HOST_WRITE, Some(_)) => 1,
+            (HOST_ADDRESS, Some(w)) => w.address as u64,
+            (HOST_DATA, Some(w)) => w.data,
+            (START, None) => start as u64,
             _ => 0,
         })
         .collect()
@@ -442,7 +446,7 @@ impl Plan {
         let modules = spec.memory.map_or(0, |m| m.len());
         let ext = outputs
             .iter()
-            .filter(|p| p.name.starts_with("ext_addr$"))
+            .filter(|p| p.name.starts_with(&format!("{EXT_ADDR}$")))
             .count();
         if modules > ext {
             return Err(format!(
@@ -577,15 +581,15 @@ fn harness_cpp(plan: &Plan) -> String {
     let ext: Vec<&Port> = plan
         .outputs
         .iter()
-        .filter(|p| p.name.starts_with("ext_addr$"))
+        .filter(|p| p.name.starts_with(&format!("{EXT_ADDR}$")))
         .collect();
     let mut addr = String::new();
     let mut data = String::new();
     for (m, p) in ext.iter().enumerate() {
-        let k = &p.name["ext_addr$".len()..];
+        let k = &p.name[EXT_ADDR.len() + 1..];
         addr += &format!("  if (mems > {m}) a[{m}] = {};\n", field(p));
         data += &format!(
-            "  if (mems > {m}) top->ext_data__024{k} = a[{m}] < mem[{m}].size() ? mem[{m}][a[{m}]] : 0;\n"
+            "  if (mems > {m}) top->{EXT_DATA}__024{k} = a[{m}] < mem[{m}].size() ? mem[{m}][a[{m}]] : 0;\n"
         );
     }
     format!(

@@ -13,7 +13,9 @@ use golden_model::common::plan::Order;
 use golden_model::common::shader::Sample;
 use golden_model::fixed::max_of;
 use hdl::common::mode_class::ModeClass;
+use hdl::common::units::TOP;
 use hdl::cube4l::compositor::{Compositor, LATENCY};
+use hdl::cube4l::units::{COMPOSITOR_CLOCK, COMPOSITOR_INPUTS, COMPOSITOR_OUTPUTS};
 use rust_hdl::prelude::*;
 use scene::Mode;
 use serde_json::json;
@@ -32,6 +34,16 @@ pub const STAGES: &[&str] = &["compositor"];
 pub struct StageFiles {
     pub verilog: String,
     pub vectors: serde_json::Value,
+}
+
+/// An object of the ports `names`, each with its value.
+fn ports(names: &[&str], values: impl IntoIterator<Item = u64>) -> serde_json::Value {
+    names
+        .iter()
+        .zip(values)
+        .map(|(n, v)| (n.to_string(), json!(v)))
+        .collect::<serde_json::Map<_, _>>()
+        .into()
 }
 
 /// The compositor for `mode`, `order` and `bits`-bit RGBA on `clocks`
@@ -68,12 +80,10 @@ pub fn compositor(mode: Mode, order: Order, bits: u32, clocks: usize, seed: u64)
         };
         let valid = below(2) != 0;
         let (out, _) = composite(mode, order, acc, &Sample { value: new, valid }, bits);
-        vectors.push(json!({
-            "acc_r": acc[0], "acc_g": acc[1], "acc_b": acc[2], "acc_a": acc[3],
-            "new_r": new[0], "new_g": new[1], "new_b": new[2], "new_a": new[3],
-            "new_valid": valid as u32, "order": order_word,
-        }));
-        expected.push(json!({"out_r": out[0], "out_g": out[1], "out_b": out[2], "out_a": out[3]}));
+        let inputs = [acc, new].concat().into_iter().map(u64::from);
+        let inputs = inputs.chain([valid as u64, order_word]);
+        vectors.push(ports(&COMPOSITOR_INPUTS, inputs));
+        expected.push(ports(&COMPOSITOR_OUTPUTS, out.map(u64::from)));
     }
     let mut uut = Compositor::new(ModeClass::of(mode), bits);
     uut.connect_all();
@@ -89,8 +99,8 @@ pub fn compositor(mode: Mode, order: Order, bits: u32, clocks: usize, seed: u64)
             "mode": format!("{mode:?}").to_lowercase(),
             "order": format!("{order:?}"),
             "rgba_bits": bits,
-            "top": "top",
-            "clock": "clock",
+            "top": TOP,
+            "clock": COMPOSITOR_CLOCK,
             "latency": LATENCY,
             "note": "inputs[t] are set before rising edge t; after edge t + latency - 1 the outputs equal expected[t]",
             "inputs": vectors,

@@ -13,6 +13,7 @@
 //! edge at `10t + 5`. A later simulation of the run continues at the clock
 //! after the previous one's last.
 
+use hdl::common::units::{CLOCK, START};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use wellen::{Hierarchy, ItemRef, SignalEncoding, SignalRef, SignalValueRef};
@@ -59,7 +60,7 @@ impl Limits {
     /// Whether a signal `below` the top (its scopes and name) is kept.
     fn keeps(&self, below: &[&str]) -> bool {
         if let [name] = below {
-            if *name == "clock" || *name == "start" {
+            if *name == CLOCK || *name == START {
                 return true;
             }
         }

@@ -11,6 +11,7 @@
 //!   timescales, clock periods and repeated timestamps do not matter.
 //! - Values are compared as bit strings without leading zeros.
 
+use hdl::common::units::CLOCK;
 use std::collections::{BTreeMap, HashMap};
 use std::path::Path;
 
@@ -526,7 +527,7 @@ fn quietly<T>(f: impl FnOnce() -> T) -> Result<T, String> {
 impl Trace {
     /// Load a trace whose cycles are counted on the top's `clock`.
     pub fn load(path: &Path) -> Result<Trace, BadTrace> {
-        Trace::load_with_clock(path, "clock")
+        Trace::load_with_clock(path, CLOCK)
     }
 
     /// Load a trace whose cycles are counted on `clock`: a 1-bit signal's

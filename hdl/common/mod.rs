@@ -13,13 +13,16 @@
 //! [`lanes`], the lane counts the RTL is built for, [`lane_copy`], a
 //! lane's own register of a frame's value, never merged with its
 //! neighbours', and [`dsp_product`], a registered product whose register
-//! is the multiplier's own on an ECP5.
+//! is the multiplier's own on an ECP5. Each architecture's units manifest
+//! is made of [`units`], its instance names checked by [`instance`]'s
+//! macro.
 
 pub mod banked_line;
 pub mod delay_line;
 pub mod depth_rom;
 pub mod dsp_product;
 pub mod gradient_bin;
+pub mod instance;
 pub mod lane_copy;
 pub mod lanes;
 pub mod lerp;
@@ -36,6 +39,7 @@ pub mod split_mul;
 pub mod split_mul_add;
 pub mod square;
 pub mod table;
+pub mod units;
 pub mod view_rom;
 
 use rust_hdl::prelude::*;

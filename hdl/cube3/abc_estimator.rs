@@ -146,10 +146,10 @@ pub struct AbcEstimator {
     shift: Constant<Bits<8>>,
     sign_ext: Constant<Bits<64>>,
     /// The 26: its differences, in place of the 6's from clock 2 on.
-    sums26: AbcSums26,
+    pub(crate) sums26: AbcSums26,
     /// The 10: its gradient, two registers on, in place of the 6's in the
     /// last clock.
-    basis10: AbcBasis10,
+    pub(crate) basis10: AbcBasis10,
     b10x_q: [DFF<Bits<64>>; 2],
     b10y_q: [DFF<Bits<64>>; 2],
     b10z_q: [DFF<Bits<64>>; 2],

@@ -63,7 +63,7 @@ pub struct AbcUnit<const P: usize, const H: usize> {
     lanes: [PlaneTaps<H>; P],
     estimators: [AbcEstimator; P],
     /// The 10: `C3Weights10`, `C3Basis10X/Y/Z`.
-    regs10: Regs<4>,
+    pub(crate) regs10: Regs<4>,
     /// Without it the outputs read 0, as in emitted Verilog that leaves the
     /// unit out (`export::prune`).
     enabled: Constant<Bit>,

@@ -119,7 +119,7 @@ pub struct BeamFetch<const P: usize, const A: usize, const B: usize> {
     row_entry: Signal<Local, Bits<32>>,
     /// `period·row_stride`, registered from the schedule's next period.
     row_base_r: DFF<Bits<32>>,
-    schedule: Schedule,
+    pub(crate) schedule: Schedule,
     /// The group, registered beside `pos_y`'s read: its plane, first ray,
     /// each lane's `x` and whether it holds a ray, with the schedule's
     /// period, write flag and buffer.

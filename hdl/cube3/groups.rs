@@ -44,8 +44,8 @@ pub struct Groups<const P: usize> {
     x0: Signal<Local, Bits<16>>,
     /// Perspective: each group's `[plane, first ray]` and its lanes' `x`
     /// (bit 16: the lane holds a ray).
-    groups: Table<32, GROUP_BITS>,
-    group_x: [Table<17, GROUP_BITS>; P],
+    pub(crate) groups: Table<32, GROUP_BITS>,
+    pub(crate) group_x: [Table<17, GROUP_BITS>; P],
     index: [Constant<Bits<16>>; P],
     shift: Constant<Bits<16>>,
 }

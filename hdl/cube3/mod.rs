@@ -11,7 +11,8 @@
 //! their products [`signed_product`]s), the
 //! shaders (`common::shader`) and the Ray Projection Cone
 //! ([`compositor`], a tree of [`rpc_node`]s). [`config`] holds what they
-//! are built from.
+//! are built from, and [`units`] which of them a configuration builds,
+//! their instance names and the stage files of the emitted design.
 
 pub mod abc_basis10;
 pub mod abc_estimator;
@@ -32,6 +33,7 @@ pub mod system;
 pub mod templates;
 pub mod trilin;
 pub mod trilin_lanes;
+pub mod units;
 
 pub use config::{AbcConfig, BeamFetchConfig, Cube3Config, Cube3Sizes, Cube3SystemConfig, Group};
 pub use pipeline::Cube3;

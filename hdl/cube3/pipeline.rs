@@ -76,8 +76,8 @@ pub struct Cube3<const P: usize, const H: usize> {
     pub has_sample: Signal<Out, Bit>,
     /// `C3Origin`, `C3Delays`, `C3Lines`.
     regs: Regs<3>,
-    control: RayControl<P, H>,
-    lanes: TrilinLanes<P, H>,
+    pub(crate) control: RayControl<P, H>,
+    pub(crate) lanes: TrilinLanes<P, H>,
     /// `[inside bits, valid, first, last, cast, inner bits]` (bits 0-7, 8,
     /// 9, 10, 11, 16-23) from the units to the leaf stage (`trilin::LATENCY` clocks),
     /// through the ABC delay (`flags_line`), and to the RPC (one more).
@@ -104,18 +104,18 @@ pub struct Cube3<const P: usize, const H: usize> {
     /// X-ray: each unit's opacity row and table (its registered read is
     /// the leaf stage's register).
     row: [Signal<Local, Bits<32>>; P],
-    opacity: [Table<32, OPACITY_BITS>; P],
-    leaf_q: [DFF<Bits<32>>; P],
-    leaf_valid_q: [DFF<Bit>; P],
+    pub(crate) opacity: [Table<32, OPACITY_BITS>; P],
+    pub(crate) leaf_q: [DFF<Bits<32>>; P],
+    pub(crate) leaf_valid_q: [DFF<Bit>; P],
     /// The ABC units: the gradients, then the shaders.
-    abc: AbcUnit<P, H>,
+    pub(crate) abc: AbcUnit<P, H>,
     /// The shaders' value `s >> F` and gradient.
     index: [Signal<Local, Bits<32>>; P],
     gx: [Signal<Local, Bits<32>>; P],
     gy: [Signal<Local, Bits<32>>; P],
     gz: [Signal<Local, Bits<32>>; P],
-    shade: [Shader; P],
-    rpc: Rpc<P>,
+    pub(crate) shade: [Shader; P],
+    pub(crate) rpc: Rpc<P>,
 }
 
 impl<const P: usize, const H: usize> Cube3<P, H> {

@@ -41,8 +41,8 @@ pub struct Cube3System<const P: usize, const A: usize, const B: usize, const H: 
     pub load_module: Signal<In, Bits<8>>,
     pub load_address: Signal<In, Bits<32>>,
     pub load_data: Signal<In, Bits<16>>,
-    fetch: BeamFetch<P, A, B>,
-    pipeline: Cube3<P, H>,
+    pub(crate) fetch: BeamFetch<P, A, B>,
+    pub(crate) pipeline: Cube3<P, H>,
 }
 
 impl<const P: usize, const A: usize, const B: usize, const H: usize> Cube3System<P, A, B, H> {

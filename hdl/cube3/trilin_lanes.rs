@@ -59,7 +59,7 @@ pub struct TrilinLanes<const P: usize, const H: usize> {
     wrap_cur_a: Signal<Local, Bits<16>>,
     wrap_next_b: Signal<Local, Bits<16>>,
     wrap_next_a: Signal<Local, Bits<16>>,
-    units: [Trilin; P],
+    pub(crate) units: [Trilin; P],
 }
 
 impl<const P: usize, const H: usize> TrilinLanes<P, H> {

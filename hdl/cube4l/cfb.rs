@@ -95,14 +95,14 @@ pub struct Cfb<const P: usize, const A: usize> {
     pub dx_mag: [Signal<Out, Bits<16>>; P],
     pub dy_neg: [Signal<Out, Bit>; P],
     pub dy_mag: [Signal<Out, Bits<16>>; P],
-    lanes: [CfbLane<A>; P],
+    pub(crate) lanes: [CfbLane<A>; P],
     running: DFF<Bit>,
     ns_c: DFF<Bits<16>>,
     nbeam_c: DFF<Bits<16>>,
     nb_c: DFF<Bits<16>>,
     /// Perspective views: the counters' lead before the address pipeline,
     /// while each lane's divider takes them as issued.
-    lead: CounterLead,
+    pub(crate) lead: CounterLead,
     perspective: Constant<Bit>,
     /// The counters as the address pipeline takes them: as issued, or
     /// (perspective) from the lead.

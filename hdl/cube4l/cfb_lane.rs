@@ -132,7 +132,7 @@ pub struct CfbLane<const A: usize> {
     par_dym: LaneCopy<Bits<16>>,
     par_dy_pos: LaneCopy<Bit>,
     /// Perspective views: the sight-ray increments, from the issued counters.
-    div: Divider,
+    pub(crate) div: Divider,
     dxn: Signal<Local, Bit>,
     dxm: Signal<Local, Bits<16>>,
     dyn_: Signal<Local, Bit>,

@@ -77,7 +77,7 @@ pub struct LaneFeed<const H: usize> {
     pub gy_mag: Signal<Out, Bits<16>>,
     pub gz_neg: Signal<Out, Bit>,
     pub gz_mag: Signal<Out, Bits<16>>,
-    abc: AbcGradient<H>,
+    pub(crate) abc: AbcGradient<H>,
     use_gradient: Constant<Bit>,
 }
 

@@ -11,7 +11,8 @@
 //! [`buffer_tap`]s over the [`buffer_rows`] history), the 2x2 selection
 //! ([`select2x2`]), the [`bilinear`] unit and the [`compositor`], with the
 //! [`control_delay`] beside them. [`config`] holds what they are built
-//! from.
+//! from, and [`units`] which of them a configuration builds, their
+//! instance names and the stage files of the emitted design.
 
 pub mod abc_gradient;
 pub mod bilinear;
@@ -31,6 +32,7 @@ pub mod pipe_lane;
 pub mod pipeline;
 pub mod select2x2;
 pub mod tap_network;
+pub mod units;
 
 pub use config::PipelineConfig;
 pub use pipeline::Pipeline;

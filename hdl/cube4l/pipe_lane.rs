@@ -101,16 +101,16 @@ pub struct PipeLane<const H: usize> {
     pub px_y: Signal<Out, Bits<16>>,
     /// The face the pixel left through (`golden_model::cube4l::plan::Face` as a number).
     pub px_face: Signal<Out, Bits<3>>,
-    feed: LaneFeed<H>,
-    shader: Shader,
-    ctl: ControlDelay,
+    pub(crate) feed: LaneFeed<H>,
+    pub(crate) shader: Shader,
+    pub(crate) ctl: ControlDelay,
     /// The bits a slice or base-plane coordinate of the build's largest
     /// volume can have ([`PipelineConfig::coord_mask`]).
     coord_mask: Constant<Bits<16>>,
-    taps: TapNetwork<H>,
-    cells: Select2x2,
-    bilinear: Bilinear,
-    compositor: Compositor,
+    pub(crate) taps: TapNetwork<H>,
+    pub(crate) cells: Select2x2,
+    pub(crate) bilinear: Bilinear,
+    pub(crate) compositor: Compositor,
 }
 
 impl<const H: usize> PipeLane<H> {

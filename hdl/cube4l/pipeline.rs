@@ -103,14 +103,14 @@ pub struct Pipeline<const P: usize, const A: usize, const H: usize> {
     pub res_valid: [Signal<Out, Bit>; P],
     pub res: [Signal<Out, Bits<64>>; P],
     /// The view registers (`golden_model::cube4l::regs::REGS`).
-    view: Regs<11>,
-    cfb: Cfb<P, A>,
-    lanes: [PipeLane<H>; P],
+    pub(crate) view: Regs<11>,
+    pub(crate) cfb: Cfb<P, A>,
+    pub(crate) lanes: [PipeLane<H>; P],
     /// With a gradient unit: the CFB's address generator again, without
     /// memory, started S + 1 clocks after it (`late_wait` counts down), so
     /// that the control of the voxel leaving the gradient unit is recomputed
     /// rather than stored.
-    late: Cfb<P, A>,
+    pub(crate) late: Cfb<P, A>,
     late_wait: DFF<Bits<32>>,
     /// `late_wait == 1`, registered from the count's next value: the late
     /// CFB's start is a flip-flop, no 32-bit compare lies before its

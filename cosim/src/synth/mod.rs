@@ -16,6 +16,7 @@ pub mod ecp5;
 pub mod timing;
 
 use crate::tool::run as run_tool;
+use hdl::common::units::{CLOCK, LOAD_ENABLE, START};
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::Command;
@@ -351,7 +352,7 @@ pub fn fmax_wrapper(top_v: &str) -> String {
     let mut outs = Vec::new();
     for (name, input, width) in &ports {
         match (name.as_str(), input) {
-            ("clock" | "start" | "load_enable", true) => conns.push(format!(".{name}({name})")),
+            (CLOCK | START | LOAD_ENABLE, true) => conns.push(format!(".{name}({name})")),
             (_, true) => conns.push(format!(".{name}(shift[{}:0])", width - 1)),
             (_, false) => {
                 let wire = format!("o_{}", name.replace('$', "_"));

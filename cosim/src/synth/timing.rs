@@ -2,6 +2,9 @@
 //! nextpnr-ice40): the fmax and the critical path, with the stage of its
 //! first and last cell.
 
+use hdl::common::units;
+use hdl::{cube3, cube4l};
+
 /// One end of the critical path: the cell and the stage it belongs to.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PathEnd {
@@ -23,40 +26,15 @@ pub struct Timing {
 
 /// The stage of a cell, from the instance path nextpnr names it by
 /// (`lanes$0.bilinear.ch$0...`; Cube-3: `pipeline.lanes.units$1...`), as the
-/// stage files group them.
+/// architectures' units manifests (`CELL_STAGES`) group them.
 pub fn stage_of(cell: &str) -> &'static str {
     // The iCE40 run places the design inside a wrapper (`uut`).
     let cell = cell.strip_prefix("uut.").unwrap_or(cell);
     let parts: Vec<&str> = cell.split(['.', '$']).collect();
-    let after_lane = |i: usize| parts.get(i).copied().unwrap_or("");
-    match parts.first().copied().unwrap_or("") {
-        "cfb" | "late" if parts.iter().any(|p| *p == "div" || *p == "lead") => "divider",
-        "cfb" => "cfb",
-        "late" => "cfb (late control)",
-        "lanes" => match after_lane(2) {
-            "feed" if after_lane(3) == "abc" => "abc_gradient",
-            "feed" => "lane_feed",
-            "shader" => "shader",
-            "taps" => "tap_network",
-            "cells" => "select2x2",
-            "bilinear" => "bilinear",
-            "compositor" => "compositor",
-            "ctl" => "control_delay",
-            _ => "pipe_lane",
-        },
-        // The host-loaded register file (`common/regs.rs`).
-        "view" => "regs",
-        // Cube-3's system.
-        "fetch" => "beam_fetch",
-        "pipeline" => match after_lane(1) {
-            "control" => "ray_control",
-            "lanes" if after_lane(2) == "units" => "trilin",
-            "lanes" => "trilin_lanes",
-            "rpc" => "rpc",
-            _ => "cube3",
-        },
-        _ => "top",
-    }
+    [cube4l::units::CELL_STAGES, cube3::units::CELL_STAGES]
+        .iter()
+        .find_map(|s| units::stage_of(s, &parts))
+        .unwrap_or(units::TOP)
 }
 
 /// Parse nextpnr's `--report` JSON.

@@ -12,9 +12,10 @@ mod width_clean;
 mod wrapper;
 mod write_once;
 
+pub use hdl::common::units::{lint_waivers, Layout, LeftOut};
 pub use modules::{split_modules, Module};
-pub use prune::{names, prune, LeftOut};
-pub use split::{lint_waivers, write_stage_files, Layout};
+pub use prune::{names, prune};
+pub use split::write_stage_files;
 pub use width_clean::width_clean;
 pub use wrapper::wrapper;
 pub use write_once::{outputs_written_twice, write_once};

@@ -3,17 +3,7 @@
 //! emitted Verilog.
 
 use super::modules::split_modules;
-
-/// A unit that a scene's hardware leaves out.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct LeftOut {
-    pub name: &'static str,
-    /// Its instance names, under their parents (`u$*`: every element of
-    /// the array `u`); the emitted Verilog has no such instance (see
-    /// [`prune`]). Empty for units that stay in the
-    /// Verilog, disabled by constants, for synthesis to remove.
-    pub instances: &'static [&'static str],
-}
+use hdl::common::units::LeftOut;
 
 /// The parent and instance name of module `name` when it is a unit in
 /// `gone`: `…$u` for `u`, or an element `…$u$3` of an array for `u$*`.

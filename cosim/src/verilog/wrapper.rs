@@ -6,6 +6,7 @@
 //! design instantiates ([docs/integration.md]).
 
 use crate::harness::ports;
+use hdl::common::units::CLOCK;
 
 /// The wrapper module `module` around the `top` of `verilog` (the design's
 /// whole Verilog or its `top.v`); `what` is a line naming the build.
@@ -13,7 +14,7 @@ pub fn wrapper(module: &str, verilog: &str, what: &str) -> Result<String, String
     let ports = ports(verilog)?;
     let clean = |n: &str| n.replace('$', "_");
     let mut names: Vec<String> = ports.iter().map(|p| clean(&p.name)).collect();
-    names.push("clock".into());
+    names.push(CLOCK.into());
     let mut sorted = names.clone();
     sorted.sort();
     sorted.dedup();
@@ -40,7 +41,7 @@ pub fn wrapper(module: &str, verilog: &str, what: &str) -> Result<String, String
             .iter()
             .map(|p| format!(".{}({})", p.name, clean(&p.name))),
     );
-    let template: Vec<String> = std::iter::once("clock".to_string())
+    let template: Vec<String> = std::iter::once(CLOCK.to_string())
         .chain(ports.iter().map(|p| clean(&p.name)))
         .map(|n| format!("//     .{n}({n}),"))
         .collect();
