@@ -1,6 +1,7 @@
 //! GTKWave save files: a trace from any engine opens with its signals
 //! grouped by stage, as the architecture groups them
-//! ([`crate::arch::Arch::waves`]), zoomed to the whole trace, counters and
+//! ([`crate::arch::Arch::waves`]), at the first `start` with [`OPEN_CLOCKS`]
+//! clocks in view (the whole trace when it holds no start), counters and
 //! addresses in decimal and data in hex.
 //!
 //! The save file names its trace by absolute path and names itself beside
@@ -20,6 +21,10 @@ pub use hdl::common::units::Wave;
 /// Pixels of GTKWave's wave pane at the save file's window size (1400
 /// wide, less the signal list), which the zoom fills.
 const PANE_PIXELS: f64 = 1100.0;
+
+/// Clocks in view when the save file opens at the first start: the start,
+/// the first beats through the stages' registers, and a clock before it.
+pub const OPEN_CLOCKS: u64 = 48;
 
 /// GTKWave's trace flags: binary for one bit, hex or decimal for vectors
 /// (right-justified).
@@ -58,7 +63,13 @@ fn absolute(path: &Path) -> PathBuf {
 pub fn render(trace: &Path, written: &Written, top: &str, waves: &[Wave]) -> String {
     let dump = absolute(trace);
     let save = dump.with_extension("gtkw");
-    let (first, end) = written.clocks;
+    let (first, end) = match written.first_start {
+        Some(s) => {
+            let at = s.saturating_sub(1).max(written.clocks.0);
+            (at, (at + OPEN_CLOCKS).min(written.clocks.1))
+        }
+        None => written.clocks,
+    };
     let span = (end.saturating_sub(first).max(1)).saturating_mul(CLOCK_TIME) as f64;
     // GTKWave shows 2^-zoom time units a pixel.
     let zoom = (PANE_PIXELS / span).log2().floor();

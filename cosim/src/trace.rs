@@ -119,6 +119,38 @@ pub struct Written {
     pub bytes: u64,
     /// The traced span in clocks, `[first, end)`.
     pub clocks: (u64, u64),
+    /// The clock of the first part's first `start`, where an engineer looks
+    /// first (before it the host writes its registers and tables, and every
+    /// stage is idle); none when the trace holds no start.
+    pub first_start: Option<u64>,
+}
+
+/// The clock of the first rising edge at which `signal` (a 1-bit variable,
+/// by full name) is 1 in the engine trace `raw`: the stream stops there, so
+/// only the trace up to it is read.
+fn first_high(raw: &Path, signal: &str) -> Option<u64> {
+    let opts = wellen::LoadOptions::default();
+    let mut wave = wellen::stream::read_from_file(raw, &opts).ok()?;
+    let h = wave.hierarchy();
+    let sig = h
+        .all_vars()
+        .map(|v| &h[v])
+        .find(|v| v.full_name(h) == signal)?
+        .signal_ref();
+    let mut found = None;
+    let _ = wave.stream_changes(
+        wellen::stream::Filter::include_signals(&[sig]),
+        |t, _, value| -> Result<(), &'static str> {
+            match value {
+                SignalValueRef::BitVec(bv) if bv.bit_string() == "1" => {
+                    found = Some(t / CLOCK_TIME);
+                    Err("found")
+                }
+                _ => Ok(()),
+            }
+        },
+    );
+    found
 }
 
 /// A kept variable of the first part: its place in the output hierarchy.
@@ -153,6 +185,7 @@ pub fn finish(raws: &[PathBuf], top: &str, req: &Request, clocks: u64) -> Result
     let open = |p: &Path| {
         wellen::stream::read_from_file(p, &opts).map_err(|e| format!("{}: {e}", p.display()))
     };
+    let first_start = first_high(first, &format!("{top}.{START}"));
     let head = open(first)?;
     let h = head.hierarchy();
     let whole =
@@ -170,6 +203,7 @@ pub fn finish(raws: &[PathBuf], top: &str, req: &Request, clocks: u64) -> Result
             parts: 1,
             bytes,
             clocks: (0, clocks),
+            first_start,
         });
     }
     let top_path: Vec<&str> = top.split('.').collect();
@@ -286,6 +320,7 @@ pub fn finish(raws: &[PathBuf], top: &str, req: &Request, clocks: u64) -> Result
         parts: raws.len(),
         bytes,
         clocks: (from / CLOCK_TIME, span_end),
+        first_start: first_start.filter(|&c| c >= from / CLOCK_TIME && c < span_end),
     })
 }
 

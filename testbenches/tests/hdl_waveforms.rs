@@ -240,6 +240,7 @@ fn the_save_file_opens_on_the_trace_from_its_own_folder() {
         parts: 1,
         bytes: 1,
         clocks: (0, 3609),
+        first_start: None,
     };
     let waves = vec![(
         "Lane".to_string(),
@@ -288,4 +289,49 @@ fn the_save_file_opens_on_the_trace_from_its_own_folder() {
     assert_eq!(after("uut.lanes$0.value[15:0]"), "@22");
     assert_eq!(after("uut.lanes$0.address[31:0]"), "@24");
     assert_eq!(after("uut.lanes$0.valid"), "@28");
+    // With a start in the trace it opens a clock before it, 48 clocks in
+    // view: 480 units in 1100 pixels is 2^-1.2 units a pixel, zoom 1.
+    let started = Written {
+        first_start: Some(1000),
+        ..written
+    };
+    let g = cosim::gtkw::render(Path::new("rel/t.fst"), &started, "uut", &waves);
+    let line = |key: &str| g.lines().find(|l| l.starts_with(key)).unwrap().to_string();
+    assert_eq!(line("[timestart]"), "[timestart] 9990");
+    assert!(line("*").starts_with("*1.000000 "), "{}", line("*"));
+}
+
+/// A traced simulation's save file opens at its first start: the host's
+/// writes come first, so the start lies past clock 0.
+#[test]
+fn a_traced_run_opens_at_its_first_start() {
+    let d = tempfile::tempdir().unwrap();
+    let trace = d.path().join("t.vcd");
+    let s = scene(
+        r#"{"volume": {"builtin": "sphere", "dims": [8, 8, 8]}, "view": {"projection": "parallel"},
+            "image": [8, 8], "hardware": {"pipelines": 2}}"#,
+    );
+    let vol = scene::volume::Volume::from_spec(&s.volume, s.hardware.voxel_bits).unwrap();
+    let req = Request::new(&trace, Limits::default()).unwrap();
+    let frames = [(s.clone(), s.camera())];
+    let run = cosim::sim::simulate_frames::<cosim::cube4l::Cube4l>(
+        &frames,
+        None,
+        &vol,
+        cosim::harness::Engine::RustHdl,
+        Some(&req),
+        &|v| v.to_string(),
+    )
+    .unwrap();
+    let start = run
+        .traced
+        .unwrap()
+        .first_start
+        .expect("a start in the trace");
+    assert!(start > 10, "the first start at clock {start}");
+    let g = std::fs::read_to_string(trace.with_extension("gtkw")).unwrap();
+    assert!(
+        g.contains(&format!("[timestart] {}\n", (start - 1) * 10)),
+        "{g}"
+    );
 }
