@@ -498,9 +498,18 @@ fn verilog_writes_stage_files_lint_waivers_and_manifest() {
         r#"{"volume": {"builtin": "sphere", "dims": [16, 16, 16]}, "view": {"projection": "parallel", "rotate_deg": [20, 30, 0]},
             "mode": "mip", "hardware": {"pipelines": 2}}"#,
     );
-    // A previous export's sweep directory: replaced whole.
+    // A previous export's sweep directory, as its manifest records it:
+    // replaced whole.
     std::fs::create_dir_all(d.path().join("out/sweep7")).unwrap();
     std::fs::write(d.path().join("out/sweep7/cfb.v"), "// old").unwrap();
+    std::fs::write(
+        d.path().join("out/manifest.json"),
+        format!(
+            r#"{{"files_crc32": {{"sweep7/cfb.v": "{:08x}"}}}}"#,
+            crc32fast::hash(b"// old")
+        ),
+    )
+    .unwrap();
     let o = cube(&["verilog", "--scene", &mip, "--out", "out"], d.path());
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let out = d.path().join("out");
