@@ -411,3 +411,31 @@ fn compare_names_the_size_of_a_huge_png() {
         "huge.png is 2147483647x1; the scene's image is 32x32",
     );
 }
+
+/// Issue 70 re-probe: `stage-vectors --clocks 1000000` took 3.5 GB for a
+/// 298 MB JSON and aborted under a 3 GB limit; the cap is now 100000
+/// (360 MB), which writes under a 1.5 GB limit. `--out /dev/full` was
+/// explained as "a FIFO needs a reader"; it is not a folder.
+#[test]
+fn stage_vectors_fit_their_cap_and_name_a_file_as_out() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    refused(
+        &cube(&["stage-vectors", "--out", "sv", "--clocks", "100001"], p),
+        "--clocks 100001 outside 1..=100000",
+    );
+    let o = cube_limited(
+        &["stage-vectors", "--out", "sv", "--clocks", "100000"],
+        p,
+        "2",
+        1_500_000_000,
+    );
+    ok(&o);
+    assert!(p.join("sv/compositor.json").is_file());
+    let o = cube(&["stage-vectors", "--out", "/dev/full"], p);
+    refused(&o, "--out /dev/full is not a folder");
+    assert!(!String::from_utf8_lossy(&o.stderr).contains("FIFO"));
+    std::fs::write(p.join("s.json"), r#"{"volume":{"builtin":"sphere","dims":[8,8,8]},"view":{"projection":"parallel"},"image":[8,8]}"#).unwrap();
+    let o = cube(&["render", "--scene", "s.json", "--json", "/dev/full/x"], p);
+    refused(&o, "(/dev/full is not a folder)");
+}
