@@ -395,21 +395,25 @@ fn compare_names_the_size_of_a_huge_png() {
         c.extend_from_slice(&h.finalize().to_be_bytes());
         c
     };
-    let mut ihdr = 2147483647u32.to_be_bytes().to_vec();
-    ihdr.extend_from_slice(&1u32.to_be_bytes());
-    ihdr.extend_from_slice(&[8, 2, 0, 0, 0]);
-    let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
-    png.extend(chunk(b"IHDR", &ihdr));
-    png.extend(chunk(
-        b"IDAT",
-        &[0x78, 0x9c, 0x63, 0x60, 0x18, 0, 0, 0, 0x64, 0, 1],
-    ));
-    png.extend(chunk(b"IEND", &[]));
-    std::fs::write(p.join("huge.png"), png).unwrap();
-    refused(
-        &cube(&["compare", "--scene", "s.json", "--image", "huge.png"], p),
-        "huge.png is 2147483647x1; the scene's image is 32x32",
-    );
+    // The png crate refuses 4294967295 x 4294967295 even without limits;
+    // its size is read from the IHDR chunk then.
+    for (w, h) in [(2147483647u32, 1u32), (u32::MAX, u32::MAX)] {
+        let mut ihdr = w.to_be_bytes().to_vec();
+        ihdr.extend_from_slice(&h.to_be_bytes());
+        ihdr.extend_from_slice(&[8, 2, 0, 0, 0]);
+        let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
+        png.extend(chunk(b"IHDR", &ihdr));
+        png.extend(chunk(
+            b"IDAT",
+            &[0x78, 0x9c, 0x63, 0x60, 0x18, 0, 0, 0, 0x64, 0, 1],
+        ));
+        png.extend(chunk(b"IEND", &[]));
+        std::fs::write(p.join("huge.png"), png).unwrap();
+        refused(
+            &cube(&["compare", "--scene", "s.json", "--image", "huge.png"], p),
+            &format!("huge.png is {w}x{h}; the scene's image is 32x32"),
+        );
+    }
 }
 
 /// Issue 70 re-probe: `stage-vectors --clocks 1000000` took 3.5 GB for a
