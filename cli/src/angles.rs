@@ -128,7 +128,7 @@ pub fn run(args: AnglesArgs) -> Result<()> {
             g.seconds,
             r.seconds,
             na_or(m.map(|m| m.rel_euclid_pct), 3),
-            na_or(m.map(|m| m.psnr_db), 2),
+            m.map_or("n/a".into(), |m| crate::common::psnr_text(m.psnr_db, 2)),
             axis,
             t3
         );

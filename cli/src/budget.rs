@@ -52,6 +52,53 @@ const FLOAT_RAY_SAMPLE: f64 = 0.35;
 const SHEARED_FLOAT_INSIDE: f64 = 750.0;
 const TRUE3D_INSIDE: f64 = 600.0;
 
+/// The address-space limit (`ulimit -v`), if one is set.
+pub fn address_limit() -> Option<u64> {
+    // SAFETY: getrlimit writes only the rlimit it is given.
+    let limit = unsafe {
+        let mut r: libc::rlimit = std::mem::zeroed();
+        if libc::getrlimit(libc::RLIMIT_AS, &mut r) == 0 {
+            r.rlim_cur
+        } else {
+            libc::RLIM_INFINITY
+        }
+    };
+    (limit != libc::RLIM_INFINITY).then_some(limit)
+}
+
+/// The address space this process has mapped now (`VmSize`), or 0 where
+/// it cannot be read.
+pub fn address_in_use() -> u64 {
+    // SAFETY: sysconf has no preconditions.
+    let page = unsafe { libc::sysconf(libc::_SC_PAGESIZE) }.max(4096) as u64;
+    std::fs::read_to_string("/proc/self/statm")
+        .ok()
+        .and_then(|s| s.split_whitespace().next()?.parse::<u64>().ok())
+        .map_or(0, |pages| pages * page)
+}
+
+/// Whether `threads` more threads of `stack` bytes each, with `room` bytes
+/// beside them, fit the address-space limit; if not, what they take and
+/// the limit, in bytes. Checked before such threads start: a thread whose
+/// signal stack cannot be mapped aborts the process.
+pub fn threads_fit(threads: u64, stack: u64, room: u64) -> Result<(), (u64, u64)> {
+    let Some(limit) = address_limit() else {
+        return Ok(());
+    };
+    let need = address_in_use()
+        .saturating_add(threads.saturating_mul(stack.saturating_add(THREAD_MARGIN_BYTES)))
+        .saturating_add(room);
+    if need > limit {
+        Err((need, limit))
+    } else {
+        Ok(())
+    }
+}
+
+/// Address space a thread takes beyond its stack (its guard page, std's
+/// signal stack and its guard, TLS), with room.
+pub const THREAD_MARGIN_BYTES: u64 = 1 << 20;
+
 /// The memory budget in bytes: half this machine's memory, and at most
 /// 80 % of the address-space limit (`ulimit -v`) where one is set.
 pub fn budget_bytes() -> u64 {

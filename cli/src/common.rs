@@ -443,17 +443,39 @@ pub fn na_or(x: Option<f64>, digits: usize) -> String {
     x.map_or("n/a".into(), |x| format!("{x:.digits$}"))
 }
 
+/// What the PSNR figure says for two identical images (no error, so no
+/// finite ratio; JSON gives null).
+pub const IDENTICAL: &str = "n/a (identical images)";
+
+/// The PSNR to `digits` decimals, or [`IDENTICAL`] when it is infinite.
+pub fn psnr_text(db: f64, digits: usize) -> String {
+    if db.is_finite() {
+        format!("{db:.digits$}")
+    } else {
+        IDENTICAL.into()
+    }
+}
+
+/// The PSNR with its unit, or [`IDENTICAL`].
+pub fn psnr_db_text(db: f64, digits: usize) -> String {
+    if db.is_finite() {
+        format!("{db:.digits$} dB")
+    } else {
+        IDENTICAL.into()
+    }
+}
+
 /// The error figures on one line, or why there are none.
 pub fn error_line(m: &Option<ErrorMetrics>) -> String {
     match m {
         None => format!("error {NO_FOREGROUND}"),
         Some(m) => format!(
-            "error: rel. Euclidean {:.3} % (foreground / sqrt 3; all pixels {:.3} %, of the reference's magnitude {} %), RMSE {:.5}, PSNR {:.2} dB, max {:.4}",
+            "error: rel. Euclidean {:.3} % (foreground / sqrt 3; all pixels {:.3} %, of the reference's magnitude {} %), RMSE {:.5}, PSNR {}, max {:.4}",
             m.rel_euclid_pct,
             m.rel_euclid_all_pct,
             na_or(m.rel_euclid_to_ref_pct, 3),
             m.rmse,
-            m.psnr_db,
+            psnr_db_text(m.psnr_db, 2),
             m.max_abs
         ),
     }

@@ -10,7 +10,7 @@ use reference::metrics::{compare, difference};
 use scene::volume::Ordered;
 use scene::Image;
 use serde_json::json;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct CompareArgs {
@@ -93,9 +93,14 @@ fn read_png(path: &std::path::Path, [w, h]: [u32; 2]) -> Result<Image> {
     // size.
     let mut header = open()?;
     header.no_limits();
-    let (width, height) = header
-        .into_dimensions()
-        .with_context(|| format!("decoding {} as an image", path.display()))?;
+    // The png crate refuses some sizes (4294967295 x 4294967295) even
+    // without limits; a PNG's size is then read from its IHDR chunk.
+    let (width, height) = match header.into_dimensions() {
+        Ok(d) => d,
+        Err(e) => png_size(path)
+            .ok_or(e)
+            .with_context(|| format!("decoding {} as an image", path.display()))?,
+    };
     if (width, height) != (w, h) {
         bail!(
             "{} is {width}x{height}; the scene's image is {w}x{h}",
@@ -124,4 +129,14 @@ fn read_png(path: &std::path::Path, [w, h]: [u32; 2]) -> Result<Image> {
             })
             .collect(),
     })
+}
+
+/// A PNG's width and height from its IHDR chunk (the first, right after
+/// the signature); none when the file does not begin as a PNG does.
+fn png_size(path: &Path) -> Option<(u32, u32)> {
+    use std::io::Read;
+    let mut head = [0u8; 24];
+    std::fs::File::open(path).ok()?.read_exact(&mut head).ok()?;
+    let be = |at: usize| u32::from_be_bytes(head[at..at + 4].try_into().unwrap());
+    (head[..8] == *b"\x89PNG\r\n\x1a\n" && &head[12..16] == b"IHDR").then(|| (be(16), be(20)))
 }

@@ -124,8 +124,12 @@ pub fn run() -> Result<()> {
         match &m.error {
             None => println!("  {:<22} {:>7.3} s   the yardstick", m.name, m.out.seconds),
             Some(e) => println!(
-                "  {:<22} {:>7.3} s   rel. Euclidean {:.2} %, PSNR {:.1} dB, max {:.3}",
-                m.name, m.out.seconds, e.rel_euclid_pct, e.psnr_db, e.max_abs
+                "  {:<22} {:>7.3} s   rel. Euclidean {:.2} %, PSNR {}, max {:.3}",
+                m.name,
+                m.out.seconds,
+                e.rel_euclid_pct,
+                crate::common::psnr_db_text(e.psnr_db, 1),
+                e.max_abs
             ),
         }
     }
@@ -326,7 +330,7 @@ fn overview(scene: &Scene, methods: &[Method]) -> Result<(u32, u32, Vec<u8>)> {
                 ),
                 Some(e) => (
                     format!("{:.2} s    error {:.2} %", m.out.seconds, e.rel_euclid_pct),
-                    format!("PSNR {:.1} dB", e.psnr_db),
+                    format!("PSNR {}", crate::common::psnr_db_text(e.psnr_db, 1)),
                 ),
             };
             text(&line1, x, row1 + ph + 6, &font(16, true, ink, centre))?;

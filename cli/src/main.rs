@@ -101,17 +101,86 @@ const MIN_STACK_BYTES: &str = "33554432";
 /// 1.5 GB `ulimit -v`).
 const WORKER_STACK_BYTES: usize = 8 << 20;
 
+/// At most this many renderer threads, whatever `RAYON_NUM_THREADS` says.
+const MAX_WORKERS: usize = 1024;
+
+/// Under an address-space limit, glibc's malloc keeps at most this many
+/// arenas (each reserves 64 MiB; by default up to 8 a core, 1 GiB on two
+/// cores, taken while the workers start), so that what the pool takes is
+/// known before it starts.
+const ARENAS: u64 = 4;
+
+/// What the run takes beside what is mapped when the pool starts and the
+/// workers' stacks: the heap's arenas, and room for the work.
+const ROOM_BYTES: u64 = (256 << 20) + ARENAS * (64 << 20);
+
+/// Cap malloc's arenas where an address-space limit is set (see
+/// [`ARENAS`]); before any thread starts.
+fn cap_arenas() {
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    if budget::address_limit().is_some() {
+        // SAFETY: mallopt changes a malloc tunable; no thread runs yet.
+        unsafe {
+            libc::mallopt(libc::M_ARENA_MAX, ARENAS as libc::c_int);
+        }
+    }
+}
+
+/// How many renderer threads to start: `RAYON_NUM_THREADS` (0 or unset:
+/// one a core), refused above [`MAX_WORKERS`] or where their stacks do not
+/// fit the address-space limit (`ulimit -v`), before any of them starts.
+fn pool_threads() -> anyhow::Result<(usize, String)> {
+    let asked = match std::env::var("RAYON_NUM_THREADS") {
+        Err(std::env::VarError::NotPresent) => None,
+        Err(std::env::VarError::NotUnicode(v)) => anyhow::bail!(
+            "RAYON_NUM_THREADS={} is not a whole number of threads",
+            v.to_string_lossy()
+        ),
+        Ok(v) => match v.trim().parse::<usize>() {
+            Ok(0) => None,
+            Ok(n) => Some(n),
+            Err(_) => anyhow::bail!(
+                "RAYON_NUM_THREADS={v} is not a whole number of threads (0 or unset: one a core)"
+            ),
+        },
+    };
+    let n = asked.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+    let name = asked.map_or_else(
+        || format!("one a core, {n}"),
+        |n| format!("RAYON_NUM_THREADS={n}"),
+    );
+    let each = WORKER_STACK_BYTES >> 20;
+    if n > MAX_WORKERS {
+        anyhow::bail!(
+            "cannot start the worker threads ({name}, {each} MiB of stack each): at most {MAX_WORKERS}; set RAYON_NUM_THREADS lower"
+        );
+    }
+    let stack = WORKER_STACK_BYTES as u64;
+    if let Err((need, limit)) = budget::threads_fit(n as u64, stack, ROOM_BYTES) {
+        let fit = limit
+            .saturating_sub(need.saturating_sub(n as u64 * (stack + budget::THREAD_MARGIN_BYTES)))
+            / (stack + budget::THREAD_MARGIN_BYTES);
+        anyhow::bail!(
+            "cannot start the worker threads ({name}, {each} MiB of stack each): with what the run maps and {} MiB of room they take {} MiB of address space, over the limit of {} MiB (ulimit -v); set RAYON_NUM_THREADS to at most {fit}, or allow more memory",
+            ROOM_BYTES >> 20,
+            need >> 20,
+            limit >> 20,
+        );
+    }
+    Ok((n, name))
+}
+
 /// Start the renderers' thread pool (`RAYON_NUM_THREADS` of them, or one a
 /// core), or say in one line why it cannot start.
 fn start_pool() -> anyhow::Result<()> {
+    let (n, name) = pool_threads()?;
     rayon::ThreadPoolBuilder::new()
+        .num_threads(n)
         .stack_size(WORKER_STACK_BYTES)
         .build_global()
         .map_err(|e| {
-            let asked = std::env::var("RAYON_NUM_THREADS")
-                .map_or_else(|_| "one a core".to_string(), |n| format!("RAYON_NUM_THREADS={n}"));
             anyhow::anyhow!(
-                "cannot start the worker threads ({asked}, {} MiB of stack each): {e}; set RAYON_NUM_THREADS lower, or allow more memory (ulimit -v)",
+                "cannot start the worker threads ({name}, {} MiB of stack each): {e}; set RAYON_NUM_THREADS lower, or allow more memory (ulimit -v)",
                 WORKER_STACK_BYTES >> 20
             )
         })
@@ -121,6 +190,7 @@ fn main() {
     if std::env::var_os("RUST_MIN_STACK").is_none() {
         std::env::set_var("RUST_MIN_STACK", MIN_STACK_BYTES);
     }
+    cap_arenas();
     // Signals are blocked here, before any thread starts, so that every
     // thread inherits the mask and only the watcher takes them.
     stop::watch();

@@ -628,7 +628,21 @@ fn open_special(path: &Path) -> Result<std::fs::File> {
         .append(true)
         .custom_flags(libc::O_NONBLOCK)
         .open(path)
-        .with_context(|| format!("opening {} (a FIFO needs a reader)", path.display()))?;
+        .map_err(|e| {
+            // Only a FIFO with no reader gives ENXIO; a path through a file
+            // that is not a folder gives ENOTDIR.
+            let why = match e.raw_os_error() {
+                Some(libc::ENXIO) => " (a FIFO needs a reader)".to_string(),
+                Some(libc::ENOTDIR) => path
+                    .parent()
+                    .filter(|p| !p.as_os_str().is_empty())
+                    .map_or(String::new(), |p| {
+                        format!(" ({} is not a folder)", p.display())
+                    }),
+                _ => String::new(),
+            };
+            anyhow::anyhow!("opening {}{why}: {e}", path.display())
+        })?;
     // Writes may block again, like any writer to a pipe.
     // SAFETY: fcntl on a descriptor this function owns.
     unsafe {

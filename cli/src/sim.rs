@@ -66,7 +66,30 @@ pub struct SimArgs {
     json: Option<PathBuf>,
 }
 
+/// Threads a simulation starts with `RUST_MIN_STACK` stacks: rust-hdl's
+/// testbench thread and the progress spinner's, with room for two more.
+const SIM_THREADS: u64 = 4;
+
+/// Refuse a simulation whose threads would not fit the address-space
+/// limit, before any starts (a thread whose signal stack cannot be mapped
+/// aborts the process).
+fn check_sim_threads() -> Result<()> {
+    let stack = std::env::var("RUST_MIN_STACK")
+        .ok()
+        .and_then(|v| v.trim().parse::<u64>().ok())
+        .unwrap_or(2 << 20);
+    if let Err((need, limit)) = crate::budget::threads_fit(SIM_THREADS, stack, 256 << 20) {
+        bail!(
+            "sim: cannot start the simulation's threads ({SIM_THREADS} of RUST_MIN_STACK={stack} bytes of stack): with what the run maps they take {} MiB of address space, over the limit of {} MiB (ulimit -v); allow more memory, or set RAYON_NUM_THREADS or RUST_MIN_STACK lower",
+            need >> 20,
+            limit >> 20
+        );
+    }
+    Ok(())
+}
+
 pub fn run(args: SimArgs) -> Result<()> {
+    check_sim_threads()?;
     let engine = match args.engine {
         Engine::RustHdl => cosim::Engine::RustHdl,
         Engine::Iverilog => cosim::Engine::Iverilog,
@@ -124,6 +147,9 @@ impl ForArch for Sim<'_> {
             files.output("--json", j)?;
         }
         if let Some(v) = &args.trace {
+            // The format first: a name that is no trace's is the problem,
+            // not what lies beside it.
+            cosim::trace::Format::of(v).map_err(|e| anyhow::anyhow!("--trace: {e}"))?;
             files.output("--trace", v)?;
             files.companion("--trace's save file", &v.with_extension("gtkw"))?;
         }

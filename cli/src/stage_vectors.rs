@@ -36,7 +36,8 @@ pub struct StageVectorsArgs {
     /// Bits of each RGBA channel (4..=15).
     #[arg(long, default_value_t = 8)]
     rgba_bits: u32,
-    /// Clocks of stimulus (1..=1000000).
+    /// Clocks of stimulus (1..=100000; 100000 write a 30 MB JSON and take
+    /// about 360 MB).
     #[arg(long, default_value_t = 1000)]
     clocks: usize,
     /// The operand generator's seed.
@@ -46,6 +47,9 @@ pub struct StageVectorsArgs {
     #[arg(long)]
     out: PathBuf,
 }
+
+/// The most clocks of stimulus `stage-vectors` writes.
+const MAX_CLOCKS: usize = 100_000;
 
 pub fn run(args: StageVectorsArgs) -> Result<()> {
     if !cosim::stage_vectors::STAGES.contains(&args.stage.as_str()) {
@@ -61,10 +65,21 @@ pub fn run(args: StageVectorsArgs) -> Result<()> {
             args.rgba_bits
         );
     }
-    if !(1..=1_000_000).contains(&args.clocks) {
+    // The vectors are built whole as JSON before they are written, about
+    // 3.6 kB of memory a clock (1000000 took 3.5 GB for a 298 MB file and
+    // aborted under a 3 GB limit); 100000 take 360 MB.
+    if !(1..=MAX_CLOCKS).contains(&args.clocks) {
         bail!(
-            "stage-vectors: --clocks {} outside 1..=1000000",
+            "stage-vectors: --clocks {} outside 1..={MAX_CLOCKS}",
             args.clocks
+        );
+    }
+    if std::fs::metadata(&args.out).is_ok_and(|m| !m.is_dir()) {
+        bail!(
+            "stage-vectors: --out {} is not a folder (it names the folder for {}.v and {}.json)",
+            args.out.display(),
+            args.stage,
+            args.stage
         );
     }
     let mode = match args.mode {

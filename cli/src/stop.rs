@@ -71,7 +71,10 @@ pub fn watch() {
     unsafe {
         libc::pthread_sigmask(libc::SIG_BLOCK, &set, std::ptr::null_mut());
     }
-    std::thread::spawn(move || {
+    // Its own stack, not RUST_MIN_STACK's (rust-hdl's 32 MiB, or whatever
+    // the environment says).
+    let watcher = std::thread::Builder::new().stack_size(1 << 20);
+    let started = watcher.spawn(move || {
         let mut sig = 0;
         // SAFETY: waits on the set blocked above.
         if unsafe { libc::sigwait(&set, &mut sig) } != 0 {
@@ -81,4 +84,13 @@ pub fn watch() {
         eprintln!("cube: stopped by signal {sig}; temporary work removed");
         std::process::exit(128 + sig);
     });
+    if let Err(e) = started {
+        eprintln!(
+            "cube: {}",
+            crate::message::one_line(&format!(
+                "cannot start the signal watcher thread: {e}; allow more memory (ulimit -v)"
+            ))
+        );
+        std::process::exit(1);
+    }
 }

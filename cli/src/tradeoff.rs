@@ -536,8 +536,8 @@ pub fn run(args: TradeoffArgs) -> Result<()> {
         points.len(),
         front.len(),
         match converged {
-            Some((s, h, d)) => format!(" (steps {s} and {h} differ by {d:.4} % < {} %)", args.tolerance),
-            None => format!(" (NOT converged to {} %: the finest step tried)", args.tolerance),
+            Some((s, h, d)) => format!(" (steps {s} and {h} differ by {d:.4} % < {} %)", json!(args.tolerance)),
+            None => format!(" (NOT converged to {} %: the finest step tried)", json!(args.tolerance)),
         },
         hw_summary(&points)
     );
@@ -802,7 +802,12 @@ fn csv(points: &[Point], front: &[usize]) -> String {
             params_text(p),
             p.error.rel_euclid_pct,
             p.error.rmse,
-            p.error.psnr_db,
+            // Identical images have no finite PSNR: the field is empty.
+            if p.error.psnr_db.is_finite() {
+                p.error.psnr_db.to_string()
+            } else {
+                String::new()
+            },
             p.error.max_abs,
             p.software_seconds,
             opt(h.map(|h| h.clocks.to_string())),
@@ -846,7 +851,7 @@ fn markdown(points: &[Point], front: &[usize], report: &Value) -> String {
             p.method,
             params_text(p),
             fmt3(p.error.rel_euclid_pct),
-            fmt3(p.error.psnr_db),
+            crate::common::psnr_text(p.error.psnr_db, 3),
             fmt3(p.error.max_abs),
             fmt_time(p.cost_seconds),
             h.map(|h| format!(

@@ -317,12 +317,19 @@ fn vcd_diff_counts_cycles_on_a_named_clock() {
 fn bad_trace_requests_are_one_line_naming_the_flag() {
     let (d, s) = setup();
     let p = d.path();
+    // A save file of the user's beside a name that is no trace's: the name
+    // is what is wrong.
+    std::fs::write(p.join("u.gtkw"), "mine").unwrap();
     for (flags, needle) in [
         (
             vec!["--trace", "t.txt"],
             "--trace: t.txt: a trace's name ends in .vcd or .fst",
         ),
         (vec!["--trace", "t"], "ends in .vcd or .fst"),
+        (
+            vec!["--trace", "u.txt"],
+            "--trace: u.txt: a trace's name ends in .vcd or .fst",
+        ),
         (
             vec!["--trace", "t.vcd", "--trace-clocks", "5..2"],
             "trace clocks 5..2: an empty range",
@@ -354,7 +361,7 @@ fn bad_trace_requests_are_one_line_naming_the_flag() {
         .unwrap()
         .filter_map(|e| e.ok())
         .map(|e| e.file_name().to_string_lossy().to_string())
-        .filter(|n| n != "s.json")
+        .filter(|n| n != "s.json" && n != "u.gtkw")
         .collect();
     assert!(left.is_empty(), "{left:?}");
 }

@@ -110,11 +110,22 @@ fn cube_limited(
     threads: &str,
     bytes: u64,
 ) -> std::process::Output {
+    cube_limited_env(args, dir, &[("RAYON_NUM_THREADS", threads)], bytes)
+}
+
+/// `cube ARGS` in `dir` with the environment `env` added and at most
+/// `bytes` of address space (`ulimit -v`).
+fn cube_limited_env(
+    args: &[&str],
+    dir: &std::path::Path,
+    env: &[(&str, &str)],
+    bytes: u64,
+) -> std::process::Output {
     use std::os::unix::process::CommandExt;
     let mut c = std::process::Command::new(env!("CARGO_BIN_EXE_cube"));
     c.args(args)
         .current_dir(dir)
-        .env("RAYON_NUM_THREADS", threads)
+        .envs(env.iter().copied())
         .stdin(std::process::Stdio::null());
     // SAFETY: setrlimit is async-signal-safe, and the closure touches
     // nothing else.
@@ -221,15 +232,107 @@ fn echoed_strings_are_cut_and_escaped_in_every_message() {
 }
 
 /// rust-hdl's simulation threads take `RUST_MIN_STACK` each, and std's
-/// `spawn` panicked where one could not start: now one line, exit 1.
+/// `spawn` panicked where one could not start: now refused in one line,
+/// exit 1, before any starts (issue 70 re-probe: a thread whose signal
+/// stack could not be mapped aborted). 32 workers now fit 1.5 GB with the
+/// simulation (malloc's arenas are capped under a limit).
 #[test]
 fn a_simulation_thread_that_cannot_start_is_one_line() {
     let d = tempfile::tempdir().unwrap();
     let p = d.path();
     let s = r#"{"volume":{"builtin":"sphere","dims":[12,12,12]},"view":{"projection":"parallel","rotate_deg":[20,30,0]},"image":[16,16]}"#;
     std::fs::write(p.join("s.json"), s).unwrap();
-    let o = cube_limited(&["sim", "--scene", "s.json"], p, "32", 1_500_000_000);
-    refused(&o, "cannot start a thread");
+    let o = cube_limited_env(
+        &["sim", "--scene", "s.json"],
+        p,
+        &[("RAYON_NUM_THREADS", "2"), ("RUST_MIN_STACK", "400000000")],
+        1_500_000_000,
+    );
+    refused(
+        &o,
+        "cannot start the simulation's threads (4 of RUST_MIN_STACK=400000000",
+    );
+}
+
+/// Issue 70 re-probe: 1000 workers under a 3 GB limit aborted in 3 runs of
+/// 8 (std could not map a started worker's signal stack); the pool is now
+/// checked against the limit before any worker starts, every time, and a
+/// count that is no number or over 1024 is refused too.
+#[test]
+fn a_pool_over_the_address_limit_is_refused_every_time() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    let s = r#"{"volume":{"builtin":"sphere","dims":[16,16,16]},"view":{"projection":"parallel","rotate_deg":[30,20,0]},"image":[32,32]}"#;
+    std::fs::write(p.join("s.json"), s).unwrap();
+    for _ in 0..8 {
+        let o = cube_limited(&["render", "--scene", "s.json"], p, "1000", 3_000_000_000);
+        refused(
+            &o,
+            "over the limit of 2861 MiB (ulimit -v); set RAYON_NUM_THREADS to at most",
+        );
+    }
+    for (n, why) in [
+        ("5000", "at most 1024"),
+        ("x", "RAYON_NUM_THREADS=x is not a whole number"),
+    ] {
+        let o = cube_limited(&["render", "--scene", "s.json"], p, n, u64::MAX);
+        refused(&o, why);
+    }
+}
+
+/// Issue 70 re-probe: identical images have no finite PSNR. `render`
+/// printed "PSNR inf dB", tradeoff.csv `inf` and tradeoff.md `∞`; each now
+/// says "n/a (identical images)", the CSV leaves the field empty and the
+/// JSON has null. A tiny `--tolerance` is echoed in e notation.
+#[test]
+fn identical_images_have_no_psnr_figure() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    std::fs::write(
+        p.join("eye.json"),
+        r#"{"volume":{"builtin":"sphere","dims":[16,16,16]},"view":{"projection":"perspective","eye":[8,8,8.5],"target":[8,8,0],"up":[0,1,0],"fov_deg":40},"image":[32,32]}"#,
+    )
+    .unwrap();
+    let out = ok(&cube(
+        &[
+            "render",
+            "--scene",
+            "eye.json",
+            "--arch",
+            "reference",
+            "--compare-reference",
+            "--json",
+            "r.json",
+        ],
+        p,
+    ));
+    assert!(out.contains("PSNR n/a (identical images)"), "{out}");
+    assert!(!out.contains("inf"), "{out}");
+    let j: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(p.join("r.json")).unwrap()).unwrap();
+    assert!(j["error"]["psnr_db"].is_null(), "{j}");
+    let out = ok(&cube(
+        &[
+            "tradeoff",
+            "--scene",
+            "eye.json",
+            "--out",
+            "t",
+            "--repeat",
+            "1",
+            "--tolerance",
+            "1e-300",
+        ],
+        p,
+    ));
+    assert!(out.contains("1e-300 %") && out.len() < 2000, "{out}");
+    let md = std::fs::read_to_string(p.join("t/tradeoff.md")).unwrap();
+    assert!(!md.contains('∞') && !md.contains("inf"), "{md}");
+    assert!(md.contains("| n/a (identical images) |"), "{md}");
+    let csv = std::fs::read_to_string(p.join("t/tradeoff.csv")).unwrap();
+    assert!(!csv.contains("inf"), "{csv}");
+    let row = csv.lines().find(|l| l.starts_with("reference,")).unwrap();
+    assert_eq!(row.split(',').nth(4), Some(""), "{row}");
 }
 
 /// The caveat reaches `tradeoff` too: each Cube-4L point of a near-edge
@@ -292,19 +395,51 @@ fn compare_names_the_size_of_a_huge_png() {
         c.extend_from_slice(&h.finalize().to_be_bytes());
         c
     };
-    let mut ihdr = 2147483647u32.to_be_bytes().to_vec();
-    ihdr.extend_from_slice(&1u32.to_be_bytes());
-    ihdr.extend_from_slice(&[8, 2, 0, 0, 0]);
-    let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
-    png.extend(chunk(b"IHDR", &ihdr));
-    png.extend(chunk(
-        b"IDAT",
-        &[0x78, 0x9c, 0x63, 0x60, 0x18, 0, 0, 0, 0x64, 0, 1],
-    ));
-    png.extend(chunk(b"IEND", &[]));
-    std::fs::write(p.join("huge.png"), png).unwrap();
+    // The png crate refuses 4294967295 x 4294967295 even without limits;
+    // its size is read from the IHDR chunk then.
+    for (w, h) in [(2147483647u32, 1u32), (u32::MAX, u32::MAX)] {
+        let mut ihdr = w.to_be_bytes().to_vec();
+        ihdr.extend_from_slice(&h.to_be_bytes());
+        ihdr.extend_from_slice(&[8, 2, 0, 0, 0]);
+        let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
+        png.extend(chunk(b"IHDR", &ihdr));
+        png.extend(chunk(
+            b"IDAT",
+            &[0x78, 0x9c, 0x63, 0x60, 0x18, 0, 0, 0, 0x64, 0, 1],
+        ));
+        png.extend(chunk(b"IEND", &[]));
+        std::fs::write(p.join("huge.png"), png).unwrap();
+        refused(
+            &cube(&["compare", "--scene", "s.json", "--image", "huge.png"], p),
+            &format!("huge.png is {w}x{h}; the scene's image is 32x32"),
+        );
+    }
+}
+
+/// Issue 70 re-probe: `stage-vectors --clocks 1000000` took 3.5 GB for a
+/// 298 MB JSON and aborted under a 3 GB limit; the cap is now 100000
+/// (360 MB), which writes under a 1.5 GB limit. `--out /dev/full` was
+/// explained as "a FIFO needs a reader"; it is not a folder.
+#[test]
+fn stage_vectors_fit_their_cap_and_name_a_file_as_out() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
     refused(
-        &cube(&["compare", "--scene", "s.json", "--image", "huge.png"], p),
-        "huge.png is 2147483647x1; the scene's image is 32x32",
+        &cube(&["stage-vectors", "--out", "sv", "--clocks", "100001"], p),
+        "--clocks 100001 outside 1..=100000",
     );
+    let o = cube_limited(
+        &["stage-vectors", "--out", "sv", "--clocks", "100000"],
+        p,
+        "2",
+        1_500_000_000,
+    );
+    ok(&o);
+    assert!(p.join("sv/compositor.json").is_file());
+    let o = cube(&["stage-vectors", "--out", "/dev/full"], p);
+    refused(&o, "--out /dev/full is not a folder");
+    assert!(!String::from_utf8_lossy(&o.stderr).contains("FIFO"));
+    std::fs::write(p.join("s.json"), r#"{"volume":{"builtin":"sphere","dims":[8,8,8]},"view":{"projection":"parallel"},"image":[8,8]}"#).unwrap();
+    let o = cube(&["render", "--scene", "s.json", "--json", "/dev/full/x"], p);
+    refused(&o, "(/dev/full is not a folder)");
 }

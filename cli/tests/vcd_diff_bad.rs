@@ -173,3 +173,81 @@ fn a_bus_is_refused_as_the_clock() {
         String::from_utf8_lossy(&o.stderr)
     );
 }
+
+/// Issue 70 re-probe: traces that differ only in a real or a string value,
+/// or in a bus's bit range, said "traces equal" (exit 0); they now differ
+/// (exit 1). A 0-bit wire, one name under two ids in a scope, and a real
+/// that is NaN or overflows are refused (exit 2) naming the file and line.
+#[test]
+fn reals_strings_ranges_and_names_count() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    let with = |var: &str, first: &str, second: &str| {
+        format!(
+            "$timescale 1ns $end\n$scope module uut $end\n$var wire 1 ! clock $end\n{var}\n$upscope $end\n$enddefinitions $end\n#0\n0!\n{first}\n#5\n1!\n#10\n0!\n{second}\n#15\n1!\n"
+        )
+    };
+    let real = "$var real 64 \" data $end";
+    let string = "$var string 1 \" data $end";
+    for (a, b, what) in [
+        (
+            with(real, "r1.5 \"", "r2.5 \""),
+            with(real, "r1.5 \"", "r3.5 \""),
+            "reals",
+        ),
+        (
+            with(string, "sHello \"", "sx \""),
+            with(string, "sWorld \"", "sx \""),
+            "strings",
+        ),
+        (
+            with("$var wire 4 \" data [3:0] $end", "b0 \"", "b1 \""),
+            with("$var wire 4 \" data [7:4] $end", "b0 \"", "b1 \""),
+            "ranges",
+        ),
+    ] {
+        std::fs::write(p.join("a.vcd"), a).unwrap();
+        std::fs::write(p.join("b.vcd"), b).unwrap();
+        let o = cube(&["vcd-diff", "a.vcd", "b.vcd"], p);
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(o.status.code(), Some(1), "{what}: {out}");
+        assert!(
+            out.contains("uut.data") && !out.contains("traces equal"),
+            "{what}: {out}"
+        );
+    }
+    std::fs::write(p.join("good.vcd"), with(real, "r1.5 \"", "r2.5 \"")).unwrap();
+    for (name, text, line, needle) in [
+        (
+            "nan.vcd",
+            with(real, "rNaN \"", "r2.5 \""),
+            "line 9:",
+            "not a finite number",
+        ),
+        (
+            "huge.vcd",
+            with(real, "r1e400 \"", "r2.5 \""),
+            "line 9:",
+            "not a finite number",
+        ),
+        (
+            "zero.vcd",
+            with("$var wire 0 \" data $end", "b0000 \"", "b0 \""),
+            "line 4:",
+            "declared 0 bits wide",
+        ),
+        (
+            "twice.vcd",
+            with(
+                "$var wire 4 \" data $end\n$var wire 4 # data $end",
+                "b0 \"\nb1 #",
+                "b1 \"",
+            ),
+            "line 5:",
+            "declared again, under another id (first on line 4)",
+        ),
+    ] {
+        std::fs::write(p.join(name), text).unwrap();
+        refused(p, &[name, "good.vcd"], &[name, line, needle]);
+    }
+}

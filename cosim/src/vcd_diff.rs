@@ -20,6 +20,9 @@ use std::path::Path;
 pub struct Trace {
     /// Full hierarchical name of each variable, with its signal's index.
     names: Vec<(Vec<String>, usize)>,
+    /// Each variable's declared bit range (`[3:0]`), where it has one: part
+    /// of its identity, so `data [3:0]` and `data [7:4]` differ.
+    ranges: Vec<Option<String>>,
     /// Per signal: (cycle, value) at each cycle where the sampled value
     /// changed, starting with cycle 0.
     samples: HashMap<usize, Vec<(u64, String)>>,
@@ -148,6 +151,9 @@ struct Scan {
     state: State,
     depth: usize,
     ids: HashMap<Vec<u8>, Declared>,
+    /// Per open scope (the outermost for variables outside any): each
+    /// variable's name with its range, to its id and line.
+    scopes: Vec<HashMap<String, (Vec<u8>, usize)>>,
     date: bool,
     version: bool,
     timescale: bool,
@@ -165,6 +171,7 @@ impl Scan {
             state: State::Header,
             depth: 0,
             ids: HashMap::new(),
+            scopes: vec![HashMap::new()],
             date: false,
             version: false,
             timescale: false,
@@ -281,6 +288,7 @@ impl Scan {
                     return Err(format!("line {line}: a $scope with no type or name"));
                 }
                 self.depth += 1;
+                self.scopes.push(HashMap::new());
                 if self.depth > MAX_SCOPE_DEPTH {
                     return Err(format!(
                         "line {line}: scopes nest deeper than {MAX_SCOPE_DEPTH}"
@@ -292,6 +300,7 @@ impl Scan {
                     return Err(format!("line {line}: an $upscope with no $scope open"));
                 }
                 self.depth -= 1;
+                self.scopes.pop();
             }
             b"var" if words.len() >= 4 => {
                 // `wellen` reads any width that is a number, and refuses others.
@@ -304,18 +313,42 @@ impl Scan {
                         "line {line}: a variable {width} bits wide (at most {MAX_VAR_BITS} are read)"
                     ));
                 }
-                let kind = match &words[0][..] {
-                    b"string" => Kind::Str,
-                    b"real" | b"realtime" | b"shortreal" | b"real_parameter" => Kind::Real,
-                    b"event" => Kind::Event,
-                    _ if width == 0 => Kind::Event,
-                    _ => Kind::Bits(width),
-                };
                 let name = words[3..]
                     .iter()
                     .map(|n| String::from_utf8_lossy(n))
                     .collect::<Vec<_>>()
                     .join(" ");
+                let kind = match &words[0][..] {
+                    b"string" => Kind::Str,
+                    b"real" | b"realtime" | b"shortreal" | b"real_parameter" => Kind::Real,
+                    b"event" => Kind::Event,
+                    // `wellen` reads such a variable's values as nothing,
+                    // so two traces would agree on it whatever they hold.
+                    _ if width == 0 => {
+                        return Err(format!(
+                            "line {line}: `{}` is declared 0 bits wide (a {} has 1 bit or more)",
+                            shown(name.as_bytes()),
+                            shown(&words[0])
+                        ))
+                    }
+                    _ => Kind::Bits(width),
+                };
+                // One name (with its range) twice in a scope under two ids:
+                // the comparison could see only one of them.
+                let key: String = name.split_whitespace().collect();
+                let scope = self.scopes.last_mut().expect("the outermost scope");
+                match scope.get(&key) {
+                    Some((id, first)) if *id != words[2] => {
+                        return Err(format!(
+                            "line {line}: `{}` is declared again, under another id (first on line {first}): give each variable of a scope its own name",
+                            shown(name.as_bytes())
+                        ))
+                    }
+                    Some(_) => {}
+                    None => {
+                        scope.insert(key, (words[2].clone(), line));
+                    }
+                }
                 self.ids.insert(words[2].clone(), Declared { kind, name });
             }
             b"date" if !words.is_empty() => {
@@ -407,10 +440,20 @@ impl Scan {
                     ))
                     }
                 };
-                if number.and_then(|n| n.parse::<f64>().ok()).is_none() {
-                    return Err(format!(
-                        "line {line}: `{v}` for the real `{name}`: not a number"
-                    ));
+                match number.and_then(|n| n.parse::<f64>().ok()) {
+                    None => {
+                        return Err(format!(
+                            "line {line}: `{v}` for the real `{name}`: not a number"
+                        ))
+                    }
+                    // NaN equals nothing, and 1e400 and 1e500 both read as
+                    // infinity: such values cannot be compared.
+                    Some(x) if !x.is_finite() => {
+                        return Err(format!(
+                            "line {line}: `{v}` for the real `{name}`: not a finite number (a 64-bit real's magnitude is below 1.8e308)"
+                        ))
+                    }
+                    Some(_) => {}
                 }
             }
             Kind::Str => {
@@ -558,18 +601,25 @@ impl Trace {
         let h = wave.hierarchy();
         // Every variable's path (scopes, then its name without a bit
         // range) and its signal: aliases share one signal.
-        let names: Vec<(Vec<String>, usize)> = h
-            .all_vars()
-            .map(|v| {
-                let var = &h[v];
-                let mut full: Vec<String> = var.full_name(h).split('.').map(plain).collect();
-                if let Some(last) = full.last_mut() {
-                    *last = plain(var.name(h));
+        let mut names: Vec<(Vec<String>, usize)> = Vec::new();
+        let mut ranges: Vec<Option<String>> = Vec::new();
+        for v in h.all_vars() {
+            let var = &h[v];
+            let mut full: Vec<String> = var.full_name(h).split('.').map(plain).collect();
+            if let Some(last) = full.last_mut() {
+                *last = plain(var.name(h));
+            }
+            names.push((full, var.signal_ref().index()));
+            ranges.push(var.index().map(|i| {
+                if i.msb() == i.lsb() {
+                    format!("[{}]", i.msb())
+                } else {
+                    format!("[{}:{}]", i.msb(), i.lsb())
                 }
-                (full, var.signal_ref().index())
-            })
-            .collect();
-        // The clock: the shallowest variable of that name, or that path.
+            }));
+        }
+        // The clock: the shallowest variable of that name, or that path
+        // (matched before ranges join the names below).
         let (clock_at, _) = names
             .iter()
             .enumerate()
@@ -598,6 +648,21 @@ impl Trace {
             }
         }
         let clock = names[clock_at].1;
+        // Variables of one path told apart only by their ranges (a bus
+        // declared bit by bit, `data [0]`, `data [1]`) keep their ranges in
+        // their names; a name of its own matches the other trace's by
+        // name, and its range is compared there.
+        let mut paths: HashMap<Vec<String>, usize> = HashMap::new();
+        for (n, _) in &names {
+            *paths.entry(n.clone()).or_default() += 1;
+        }
+        for (i, (n, _)) in names.iter_mut().enumerate() {
+            if paths[&*n] > 1 {
+                if let (Some(last), Some(r)) = (n.last_mut(), ranges[i].take()) {
+                    last.push_str(&r);
+                }
+            }
+        }
         // The value of each signal now, and the signals changed since the
         // last sample: a sample touches only those.
         let slots = names.iter().map(|(_, c)| c + 1).max().unwrap_or(0);
@@ -630,9 +695,13 @@ impl Trace {
                     rose = false;
                 }
             }
+            // Reals and strings are compared as values too, each kind
+            // marked so that no value of one reads as one of another.
             let v = match value {
                 wellen::SignalValueRef::BitVec(bv) => canonical(&bv.bit_string()),
-                _ => return Ok::<(), ()>(()),
+                wellen::SignalValueRef::Real(x) => format!("real {x:?}"),
+                wellen::SignalValueRef::String(t) => format!("string {t:?}"),
+                wellen::SignalValueRef::Event => return Ok::<(), ()>(()),
             };
             let id = signal.index();
             if id == clock {
@@ -660,6 +729,7 @@ impl Trace {
         }
         Ok(Trace {
             names,
+            ranges,
             samples,
             cycles,
         })
@@ -667,10 +737,19 @@ impl Trace {
 
     /// Names with `skip` leading scopes dropped, to signals.
     fn named(&self, skip: usize) -> BTreeMap<String, usize> {
+        self.named_ranges(skip)
+            .into_iter()
+            .map(|(n, (c, _))| (n, c))
+            .collect()
+    }
+
+    /// Names with `skip` leading scopes dropped, to signals and ranges.
+    fn named_ranges(&self, skip: usize) -> BTreeMap<String, (usize, Option<&str>)> {
         self.names
             .iter()
-            .filter(|(n, _)| n.len() > skip)
-            .map(|(n, c)| (n[skip..].join("."), *c))
+            .zip(&self.ranges)
+            .filter(|((n, _), _)| n.len() > skip)
+            .map(|((n, c), r)| (n[skip..].join("."), (*c, r.as_deref())))
             .collect()
     }
 
@@ -754,6 +833,7 @@ pub fn compare_from(
         }
     }
     let (na, nb) = (a.named(best.1), b.named(best.2));
+    let (ra, rb) = (a.named_ranges(best.1), b.named_ranges(best.2));
     let keep = |k: &str| pat.as_ref().is_none_or(|p| p.matches(k));
     let common: Vec<&String> = na
         .keys()
@@ -769,6 +849,20 @@ pub fn compare_from(
     let mut mismatches = Vec::new();
     for name in &common {
         let (ca, cb) = (na[*name], nb[*name]);
+        // The bit range is part of a signal: `data [3:0]` is not
+        // `data [7:4]`, whatever their values (a side without a range
+        // matches any).
+        if let (Some(x), Some(y)) = (ra[*name].1, rb[*name].1) {
+            if x != y {
+                mismatches.push(SignalMismatch {
+                    cycle: 0,
+                    signal: name.to_string(),
+                    a: format!("bits {x}"),
+                    b: format!("bits {y}"),
+                });
+                continue;
+            }
+        }
         // Cycles where either side changes: the only places a difference can start.
         let mut points: Vec<u64> = a
             .samples
@@ -897,11 +991,13 @@ mod tests {
             "4294967295 bits wide",
         );
         let real =
-            vcd("r1.5 %\nr1e3 %\nrnan %").replace("$upscope", "$var real 64 % f $end\n$upscope");
+            vcd("r1.5 %\nr1e3 %\nr-2 %").replace("$upscope", "$var real 64 % f $end\n$upscope");
         load(&real, "clock").unwrap();
-        refused(&real.replace("rnan", "rx"), 15, "not a number");
-        refused(&real.replace("rnan %", "b1 %"), 15, "for the real `f`");
-        refused(&real.replace("rnan %", "1%"), 15, "for the real `f`");
+        refused(&real.replace("r-2", "rnan"), 15, "not a finite number");
+        refused(&real.replace("r-2", "r1e400"), 15, "not a finite number");
+        refused(&real.replace("r-2", "rx"), 15, "not a number");
+        refused(&real.replace("r-2 %", "b1 %"), 15, "for the real `f`");
+        refused(&real.replace("r-2 %", "1%"), 15, "for the real `f`");
         let string = vcd("shello %").replace("$upscope", "$var string 1 % s $end\n$upscope");
         load(&string, "clock").unwrap();
         refused(&string.replace("shello", "b1"), 13, "for the string `s`");
@@ -943,5 +1039,84 @@ mod tests {
         let e = load(&text, "clock").unwrap_err();
         assert!(e.contains("the trace reader failed"), "{e}");
         assert!(!e.contains('\n'), "{e}");
+    }
+
+    /// Issue 70 re-probe: reals and strings were not compared (two traces
+    /// that differed only there were equal); a 0-bit wire's values were
+    /// read as nothing; one name under two ids in a scope, and a bus's
+    /// bit range, were lost.
+    #[test]
+    fn reals_strings_ranges_and_names_are_part_of_the_comparison() {
+        let with = |var: &str, first: &str, second: &str| {
+            format!(
+                "$timescale 1ns $end\n$scope module uut $end\n$var wire 1 ! clock $end\n{var}\n$upscope $end\n$enddefinitions $end\n#0\n0!\n{first}\n#5\n1!\n#10\n0!\n{second}\n#15\n1!\n"
+            )
+        };
+        let differ = |a: &str, b: &str, what: &str| {
+            let (a, b) = (load(a, "clock").unwrap(), load(b, "clock").unwrap());
+            let c = compare(&a, &b, None).unwrap();
+            assert!(!c.equal(), "{what}: equal");
+            assert_eq!(c.mismatches[0].signal, "uut.data", "{what}");
+            assert!(compare(&a, &a, None).unwrap().equal(), "{what}: itself");
+        };
+        let real = "$var real 64 \" data $end";
+        differ(
+            &with(real, "r1.5 \"", "r2.5 \""),
+            &with(real, "r1.5 \"", "r3.5 \""),
+            "reals",
+        );
+        let string = "$var string 1 \" data $end";
+        differ(
+            &with(string, "sHello \"", "sx \""),
+            &with(string, "sWorld \"", "sx \""),
+            "strings",
+        );
+        differ(
+            &with("$var wire 4 \" data [3:0] $end", "b0 \"", "b1 \""),
+            &with("$var wire 4 \" data [7:4] $end", "b0 \"", "b1 \""),
+            "ranges",
+        );
+        // A side without a range matches by name (rust-hdl writes none).
+        let a = load(
+            &with("$var wire 4 \" data [3:0] $end", "b0 \"", "b1 \""),
+            "clock",
+        )
+        .unwrap();
+        let b = load(&with("$var wire 4 \" data $end", "b0 \"", "b1 \""), "clock").unwrap();
+        assert!(compare(&a, &b, None).unwrap().equal());
+        refused(
+            &with("$var wire 0 \" data $end", "b0000 \"", "b0 \""),
+            4,
+            "`data` is declared 0 bits wide",
+        );
+        refused(
+            &with(
+                "$var wire 4 \" data $end\n$var wire 4 # data $end",
+                "b0 \"\nb1 #",
+                "b1 \"",
+            ),
+            5,
+            "`data` is declared again, under another id (first on line 4)",
+        );
+        // The same id twice is an alias, and a bus declared bit by bit
+        // names each bit.
+        load(
+            &with(
+                "$var wire 4 \" data $end\n$var wire 4 \" data $end",
+                "b0 \"",
+                "b1 \"",
+            ),
+            "clock",
+        )
+        .unwrap();
+        load(
+            &with(
+                "$var wire 1 \" data [0] $end\n$var wire 1 # data [1] $end",
+                "0\"\n0#",
+                "1\"",
+            ),
+            "clock",
+        )
+        .unwrap();
     }
 }
