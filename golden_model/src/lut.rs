@@ -689,6 +689,12 @@ mod tests {
         // Cube diagonal, index 591: 0.25 + 0.5 * 0.57771 -> 137.4;
         // 0.5 * 0.57771^10 = 0.00207 -> 0.53.
         assert_eq!(l.reflect([-15, -15, -15]), [137, 1]);
+        // Past the remembered width (every component beyond ±15): computed,
+        // not looked up. |q|² = 768, rnorm 1182 (32768 / 27.713 = 1182.41),
+        // t = 32768 * 1182, index 590.42 -> 590: 0.25 + 0.5 * 590/1023
+        // -> 137.28; 0.5 * (590/1023)^10 -> 0.52.
+        assert_eq!(l.reflect([-16, -16, -16]), [137, 1]);
+        assert_eq!(l.reflect([16, 16, 16]), [64, 0]);
         // 12-bit words: 0.75 * 4095 = 3071.25, 0.5 * 4095 = 2047.5.
         let l12 = Lighting::new(&shading(), glam::DMat3::IDENTITY, z, z, 12, 5);
         assert_eq!(l12.reflect([0, 0, -2]), [3071, 2048]);

@@ -281,6 +281,47 @@ mod tests {
     }
 
     #[test]
+    fn one_wide_cell_takes_the_i64_lerps() {
+        // The i32 shortcut is for cells whose every word is below
+        // 2^(30 - frac); one wide word among the four cells (or channels)
+        // must send the whole lerp to the i64 path, whichever cell holds it
+        // and whatever the other words are. B = 2^28 in a 3x3 slice of 0s,
+        // d = (1/2, 1/2) at (1, 1): the cells are c00 = [4], c10 = [3],
+        // c01 = [1], c11 = [0]; each half lerp of B and 0 is exact.
+        const B: u32 = 1 << 28;
+        // (index, words) of the cells that are not 0; the gathered words.
+        type Case = (&'static [(usize, [u32; 4])], [u32; 4]);
+        let cases: [Case; 6] = [
+            // c11 alone: top 0, bottom B/2, B/4.
+            (&[(0, [B, 0, 0, 0])], [B / 4, 0, 0, 0]),
+            // c01 = c11: top 0, bottom B, B/2.
+            (&[(1, [B, 0, 0, 0]), (0, [B, 0, 0, 0])], [B / 2, 0, 0, 0]),
+            // c10 alone: top B/2, bottom 0, B/4.
+            (&[(3, [B, 0, 0, 0])], [B / 4, 0, 0, 0]),
+            // c10 = c01: top B/2, bottom B/2, B/2.
+            (&[(3, [B, 0, 0, 0]), (1, [B, 0, 0, 0])], [B / 2, 0, 0, 0]),
+            // c00 = c10: top B, bottom 0, B/2.
+            (&[(4, [B, 0, 0, 0]), (3, [B, 0, 0, 0])], [B / 2, 0, 0, 0]),
+            // c00 alone, the same word in two channels: B/4 in each.
+            (&[(4, [B, B, 0, 0])], [B / 4, B / 4, 0, 0]),
+        ];
+        for (cells, want) in cases {
+            let mut prev = vec![[0u32; 4]; 9];
+            for &(i, v) in cells {
+                prev[i] = v;
+            }
+            assert_eq!(
+                gather(&prev, 3, 3, 1, 1, 128, 128, 8, [0; 4]),
+                want,
+                "{cells:?}"
+            );
+            let mut row = [[0u32; 4]; 1];
+            gather_row(&prev, 3, 1, (1, 2), 128, 128, 8, &mut row);
+            assert_eq!(row[0], want, "row, {cells:?}");
+        }
+    }
+
+    #[test]
     fn gather_edges_by_hand() {
         // prev[x + 3y] = 10 * (x + 3y), reset 7.
         let prev: Vec<[u32; 4]> = (0..9).map(|i| [i * 10, 0, 0, 0]).collect();
