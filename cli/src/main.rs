@@ -160,8 +160,14 @@ fn pool_threads() -> anyhow::Result<(usize, String)> {
         let fit = limit
             .saturating_sub(need.saturating_sub(n as u64 * (stack + budget::THREAD_MARGIN_BYTES)))
             / (stack + budget::THREAD_MARGIN_BYTES);
+        // RAYON_NUM_THREADS=0 means one a core: with no thread that fits,
+        // only more memory helps.
+        let advice = match fit {
+            0 => "allow more memory: not one worker fits".to_string(),
+            _ => format!("set RAYON_NUM_THREADS to at most {fit}, or allow more memory"),
+        };
         anyhow::bail!(
-            "cannot start the worker threads ({name}, {each} MiB of stack each): with what the run maps and {} MiB of room they take {} MiB of address space, over the limit of {} MiB (ulimit -v); set RAYON_NUM_THREADS to at most {fit}, or allow more memory",
+            "cannot start the worker threads ({name}, {each} MiB of stack each): with what the run maps and {} MiB of room they take {} MiB of address space, over the limit of {} MiB (ulimit -v); {advice}",
             ROOM_BYTES >> 20,
             need >> 20,
             limit >> 20,

@@ -147,10 +147,10 @@ impl ForArch for Sim<'_> {
             files.output("--json", j)?;
         }
         if let Some(v) = &args.trace {
-            // The format first: a name that is no trace's is the problem,
-            // not what lies beside it.
-            cosim::trace::Format::of(v).map_err(|e| anyhow::anyhow!("--trace: {e}"))?;
             files.output("--trace", v)?;
+            // The format before the save file: a name that is no trace's is
+            // the problem, not what lies beside it.
+            cosim::trace::Format::of(v).map_err(|e| anyhow::anyhow!("--trace: {e}"))?;
             files.companion("--trace's save file", &v.with_extension("gtkw"))?;
         }
         // The trace is written to temporary files of the set, which land

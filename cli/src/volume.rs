@@ -49,14 +49,22 @@ pub fn run(args: VolumeArgs) -> Result<()> {
     let [nx, ny, nz] = vol.dims;
     match args.layout {
         Layout::Raw => {
-            let (bytes, kind) = if vol.bits == 8 {
-                (vol.data.iter().map(|&v| v as u8).collect::<Vec<u8>>(), "u8")
-            } else {
-                (
-                    vol.data.iter().flat_map(|v| v.to_le_bytes()).collect(),
-                    "u16 little-endian",
-                )
+            let (width, kind) = match vol.bits {
+                8 => (1, "u8"),
+                _ => (2, "u16 little-endian"),
             };
+            let mut bytes = Vec::new();
+            bytes
+                .try_reserve_exact(vol.data.len() * width)
+                .map_err(|_| {
+                    anyhow!(
+                        "--out: the {nx}x{ny}x{nz} volume's {} bytes are more memory than this process may have",
+                        vol.data.len() * width
+                    )
+                })?;
+            for v in &vol.data {
+                bytes.extend_from_slice(&v.to_le_bytes()[..width]);
+            }
             files.bytes(&args.out, &bytes)?;
             files.commit()?;
             println!(
@@ -69,7 +77,7 @@ pub fn run(args: VolumeArgs) -> Result<()> {
             let layout = DramLayout::new(vol.dims, vol.bits, p);
             let image = layout.image(&vol).map_err(|_| {
                 anyhow!(
-                    "--layout dram: the image of {nx}x{ny}x{nz} at p = {p} is {} bytes, more memory than this machine gives",
+                    "--layout dram: the image of {nx}x{ny}x{nz} at p = {p} is {} bytes, more memory than this process may have",
                     layout.bytes
                 )
             })?;

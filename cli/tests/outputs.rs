@@ -87,10 +87,11 @@ fn an_output_on_an_input_or_on_another_output_is_refused_before_any_work() {
         &cube(&["tradeoff", "--scene", "t/tradeoff.json", "--out", "t"], p),
         "would replace the input --scene",
     );
-    // sim: a VCD whose save file is the VCD itself.
+    // sim: a trace named as its own save file is no trace's name: the
+    // format is checked before the save file beside it.
     refused(
         &cube(&["sim", "--scene", "s.json", "--vcd", "x.gtkw"], p),
-        "give each output its own file",
+        "a trace's name ends in .vcd or .fst",
     );
     assert_eq!(std::fs::read(p.join("s.json")).unwrap(), scene_before);
     assert_eq!(std::fs::read(p.join("in.png")).unwrap(), image_before);

@@ -70,3 +70,36 @@ fn the_dram_image_and_its_map() {
     );
     assert!(!p.join("w.raw").exists() && !p.join("w.json").exists());
 }
+
+/// A volume whose file does not fit in the memory the process may have is
+/// one line naming its size, not an allocation abort (issue 70 re-probe:
+/// 1024x1024x256 under a 1 GB limit aborted).
+#[test]
+fn a_volume_too_big_for_the_limit_is_one_line() {
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path();
+    std::fs::write(
+        p.join("big.json"),
+        r#"{"volume": {"builtin": "sphere", "dims": [1024, 1024, 256]}, "view": {"projection": "parallel"}, "image": [16, 16]}"#,
+    )
+    .unwrap();
+    for layout in ["raw", "dram"] {
+        let o = Command::new("prlimit")
+            .arg("--as=1000000000")
+            .arg(env!("CARGO_BIN_EXE_cube"))
+            .args([
+                "volume", "--scene", "big.json", "--layout", layout, "--out", "b.bin",
+            ])
+            .current_dir(p)
+            .output()
+            .expect("prlimit (util-linux) runs the case under a memory limit");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{layout}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{layout}: {err}");
+        assert!(
+            err.contains("more memory than this process may have"),
+            "{layout}: {err}"
+        );
+        assert!(!p.join("b.bin").exists(), "{layout}");
+    }
+}

@@ -151,9 +151,11 @@ struct Scan {
     state: State,
     depth: usize,
     ids: HashMap<Vec<u8>, Declared>,
-    /// Per open scope (the outermost for variables outside any): each
-    /// variable's name with its range, to its id and line.
-    scopes: Vec<HashMap<String, (Vec<u8>, usize)>>,
+    /// The open scopes' names, and each variable's full name (the scopes'
+    /// path, its name and its range) to its id and line: a scope closed and
+    /// opened again is the same scope.
+    path: Vec<String>,
+    names: HashMap<String, (Vec<u8>, usize)>,
     date: bool,
     version: bool,
     timescale: bool,
@@ -171,7 +173,8 @@ impl Scan {
             state: State::Header,
             depth: 0,
             ids: HashMap::new(),
-            scopes: vec![HashMap::new()],
+            path: Vec::new(),
+            names: HashMap::new(),
             date: false,
             version: false,
             timescale: false,
@@ -288,7 +291,8 @@ impl Scan {
                     return Err(format!("line {line}: a $scope with no type or name"));
                 }
                 self.depth += 1;
-                self.scopes.push(HashMap::new());
+                self.path
+                    .push(String::from_utf8_lossy(words.get(1).unwrap_or(&words[0])).to_string());
                 if self.depth > MAX_SCOPE_DEPTH {
                     return Err(format!(
                         "line {line}: scopes nest deeper than {MAX_SCOPE_DEPTH}"
@@ -300,7 +304,7 @@ impl Scan {
                     return Err(format!("line {line}: an $upscope with no $scope open"));
                 }
                 self.depth -= 1;
-                self.scopes.pop();
+                self.path.pop();
             }
             b"var" if words.len() >= 4 => {
                 // `wellen` reads any width that is a number, and refuses others.
@@ -333,11 +337,15 @@ impl Scan {
                     }
                     _ => Kind::Bits(width),
                 };
-                // One name (with its range) twice in a scope under two ids:
-                // the comparison could see only one of them.
-                let key: String = name.split_whitespace().collect();
-                let scope = self.scopes.last_mut().expect("the outermost scope");
-                match scope.get(&key) {
+                // One name (with its range) twice in a scope under two ids,
+                // also where the scope is opened again: the comparison
+                // could see only one of them.
+                let key = format!(
+                    "{}.{}",
+                    self.path.join("."),
+                    name.split_whitespace().collect::<String>()
+                );
+                match self.names.get(&key) {
                     Some((id, first)) if *id != words[2] => {
                         return Err(format!(
                             "line {line}: `{}` is declared again, under another id (first on line {first}): give each variable of a scope its own name",
@@ -346,7 +354,7 @@ impl Scan {
                     }
                     Some(_) => {}
                     None => {
-                        scope.insert(key, (words[2].clone(), line));
+                        self.names.insert(key, (words[2].clone(), line));
                     }
                 }
                 self.ids.insert(words[2].clone(), Declared { kind, name });
@@ -1097,6 +1105,16 @@ mod tests {
             ),
             5,
             "`data` is declared again, under another id (first on line 4)",
+        );
+        // Also in a scope closed and opened again.
+        refused(
+            &with(
+                "$scope module m $end\n$var wire 1 \" a $end\n$upscope $end\n$scope module m $end\n$var wire 1 # a $end\n$upscope $end",
+                "0\"\n0#",
+                "1#",
+            ),
+            8,
+            "`a` is declared again, under another id (first on line 5)",
         );
         // The same id twice is an alias, and a bus declared bit by bit
         // names each bit.
