@@ -1,15 +1,10 @@
 //! `cube volume`: the raw voxels, and the DRAM image of `--layout dram`
 //! with its address map.
 
-use std::process::Command;
+mod common;
 
-fn cube(args: &[&str], dir: &std::path::Path) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_cube"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .unwrap()
-}
+use common::{cube, ok, refused};
+use std::process::Command;
 
 #[test]
 fn the_dram_image_and_its_map() {
@@ -26,7 +21,7 @@ fn the_dram_image_and_its_map() {
         ],
         p,
     );
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    ok(&o);
     let map: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(p.join("v.json")).unwrap()).unwrap();
     let image = std::fs::read(p.join("v.bin")).unwrap();
@@ -49,7 +44,7 @@ fn the_dram_image_and_its_map() {
     // (u + v + w) % 4 of word u / 4 + 3 v + 18 w; the raw file has it at
     // u + 10 v + 60 w.
     let o = cube(&["volume", "--scene", "s.json", "--out", "v.raw"], p);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    ok(&o);
     let raw = std::fs::read(p.join("v.raw")).unwrap();
     for (u, v, w) in [(0, 0, 0), (5, 3, 3), (9, 5, 6), (4, 2, 1)] {
         let at = 8192 + 4 * (u / 4 + 3 * v + 18 * w) + (u + v + w) % 4;
@@ -62,12 +57,7 @@ fn the_dram_image_and_its_map() {
         ],
         p,
     );
-    assert_eq!(o.status.code(), Some(1));
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert!(
-        err.contains("--map") && err.trim_end().lines().count() == 1,
-        "{err}"
-    );
+    refused(&o, "--map");
     assert!(!p.join("w.raw").exists() && !p.join("w.json").exists());
 }
 
@@ -93,13 +83,7 @@ fn a_volume_too_big_for_the_limit_is_one_line() {
             .current_dir(p)
             .output()
             .expect("prlimit (util-linux) runs the case under a memory limit");
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(1), "{layout}: {err}");
-        assert_eq!(err.trim_end().lines().count(), 1, "{layout}: {err}");
-        assert!(
-            err.contains("more memory than this process may have"),
-            "{layout}: {err}"
-        );
+        refused(&o, "more memory than this process may have");
         assert!(!p.join("b.bin").exists(), "{layout}");
     }
 }
